@@ -1,0 +1,191 @@
+// Implementation of the CLI subcommands on top of the model catalog.
+#include "Commands.h"
+
+#include "catalog/ModelCatalog.h"
+#include "common/AtomicFile.h"
+#include "common/TimeSeries.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+#include <nlohmann/json.hpp>
+#include <omp.h>
+#include <sstream>
+#include <unistd.h>
+
+namespace pl::cli {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double secondsSince(Clock::time_point start) {
+    return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// Applies "key=value" overrides on top of the preset's parameters (validated by the model's reset).
+void applySets(Preset& preset, const std::vector<std::string>& sets) {
+    const auto* specs = specsForModel(preset.model);
+    for (const auto& assignment : sets) {
+        const auto eq = assignment.find('=');
+        if (eq == std::string::npos || eq == 0)
+            throw PresetError("", "--set expects key=value, got \"" + assignment + "\"");
+        const std::string key = assignment.substr(0, eq);
+        const ParamSpec* spec = findSpec(*specs, key);
+        if (!spec) throw PresetError(key, "--set: unknown parameter '" + key + "' for model " + preset.model);
+        ParamValue value = parseValue(*spec, assignment.substr(eq + 1));
+        if (auto problem = checkValue(*spec, value); !problem.empty()) throw PresetError(key, "--set: " + problem);
+        preset.params[key] = std::move(value);
+    }
+}
+
+void setThreads(int threads) {
+    if (threads > 0) omp_set_num_threads(threads);
+}
+
+std::unique_ptr<Model> prepare(const std::string& name, const std::vector<std::string>& sets,
+                               std::optional<std::uint64_t> seed) {
+    Preset preset = loadPreset(name);
+    applySets(preset, sets);
+    if (seed) preset.seed = *seed;
+    return instantiate(preset);
+}
+
+void writeText(const std::string& path, const std::string& text) {
+    if (!path.empty()) writeFileAtomically(path, text);
+}
+
+std::string particlesCsv(const Model& model) {
+    std::ostringstream out;
+    model.writeParticles(out);
+    return out.str();
+}
+
+std::string histogramsCsv(const Model& model) {
+    std::ostringstream out;
+    out.precision(17);
+    out << "histogram,bin_lo,bin_hi,count,density,theory_density\n";
+    for (const auto& h : model.histograms()) {
+        for (std::size_t b = 0; b < h.counts.bins(); ++b) {
+            const double lo = h.counts.lo() + static_cast<double>(b) * h.counts.binWidth();
+            out << h.name << ',' << lo << ',' << lo + h.counts.binWidth() << ',' << h.counts.count(b) << ','
+                << h.counts.density(b) << ',' << (b < h.theory.size() ? h.theory[b] : 0.0) << '\n';
+        }
+    }
+    return out.str();
+}
+
+class Progress {
+public:
+    Progress(long long total, bool enabled) : total_(total), enabled_(enabled), tty_(::isatty(2) != 0) {}
+    void update(long long done) {
+        if (!enabled_) return;
+        const double elapsed = secondsSince(start_);
+        if (elapsed < 1.0 || elapsed - lastPrint_ < (tty_ ? 0.25 : 2.0)) return;
+        lastPrint_ = elapsed;
+        const double rate = done / elapsed;
+        const double eta = rate > 0 ? (total_ - done) / rate : 0.0;
+        std::fprintf(stderr, "%sstep %lld/%lld (%.0f %%), %.0f steps/s, %.1f s left%s", tty_ ? "\r" : "", done, total_,
+                     100.0 * done / std::max(1LL, total_), rate, eta, tty_ ? "   " : "\n");
+        printed_ = true;
+    }
+    void finish() {
+        if (printed_ && tty_) std::fputc('\n', stderr);
+    }
+
+private:
+    long long total_;
+    bool enabled_, tty_, printed_ = false;
+    Clock::time_point start_ = Clock::now();
+    double lastPrint_ = 0.0;
+};
+
+} // namespace
+
+int listPresets() {
+    for (const auto& p : builtinPresets()) {
+        std::string summary = p.preset.description.substr(0, p.preset.description.find(". "));
+        std::cout << p.name << "\t" << p.preset.model << "\t" << summary << "\n";
+    }
+    return kOk;
+}
+
+int runSimulation(const RunOptions& options) {
+    setThreads(options.threads);
+    std::unique_ptr<Model> model;
+    try {
+        model = prepare(options.preset, options.sets, options.seed);
+    } catch (const std::exception& e) {
+        std::cerr << "particlelab-cli: " << e.what() << "\n";
+        return kBadInput;
+    }
+    try {
+        writeText(options.dumpInitial, particlesCsv(*model));
+        TimeSeries series(model->seriesColumns());
+        Progress progress(options.steps, !options.quiet);
+        series.append(model->sampleSeries());
+        for (long long s = 1; s <= options.steps && !model->failure(); ++s) {
+            model->step();
+            if (s % options.every == 0 || s == options.steps) series.append(model->sampleSeries());
+            progress.update(s);
+        }
+        progress.finish();
+        // Everything measured so far is written even when the model failed: nothing is lost.
+        if (!options.out.empty()) {
+            std::ostringstream csv;
+            series.writeCsv(csv);
+            writeText(options.out, csv.str());
+        }
+        writeText(options.histogram, histogramsCsv(*model));
+        writeText(options.dumpFinal, particlesCsv(*model));
+    } catch (const FileError& e) {
+        std::cerr << "particlelab-cli: " << e.what() << "\n";
+        return kCannotWrite;
+    }
+    if (auto failure = model->failure()) {
+        std::cerr << "particlelab-cli: the model stopped: " << failure->message() << "\n";
+        return kModelFailed;
+    }
+    return kOk;
+}
+
+int benchmark(const BenchOptions& options) {
+    setThreads(options.threads);
+    std::unique_ptr<Model> model;
+    try {
+        model = prepare(options.preset, options.sets, std::nullopt);
+    } catch (const std::exception& e) {
+        std::cerr << "particlelab-cli: " << e.what() << "\n";
+        return kBadInput;
+    }
+    // Warm-up: caches, page faults, the first cell-list allocation.
+    for (long long s = 0; s < std::min<long long>(options.steps / 10 + 1, 200); ++s) model->step();
+    std::vector<double> seconds;
+    for (int r = 0; r < options.repeats; ++r) {
+        const auto start = Clock::now();
+        for (long long s = 0; s < options.steps; ++s) model->step();
+        seconds.push_back(secondsSince(start));
+    }
+    if (auto failure = model->failure()) {
+        std::cerr << "particlelab-cli: the model stopped: " << failure->message() << "\n";
+        return kModelFailed;
+    }
+    std::vector<double> sorted = seconds;
+    std::sort(sorted.begin(), sorted.end());
+    const double median = sorted[sorted.size() / 2];
+    const auto particles = static_cast<double>(model->particleCount());
+    nlohmann::ordered_json line;
+    line["preset"] = options.preset;
+    line["particles"] = model->particleCount();
+    line["steps"] = options.steps;
+    line["seconds"] = median;
+    line["seconds_all"] = seconds;
+    line["p_steps_per_s"] = particles * static_cast<double>(options.steps) / median;
+    line["threads"] = omp_get_max_threads();
+    line["backend"] = "cpu";
+    std::cout << line.dump() << std::endl;
+    return kOk;
+}
+
+} // namespace pl::cli

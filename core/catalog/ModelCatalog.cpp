@@ -1,0 +1,63 @@
+// Model registry and built-in presets.
+#include "ModelCatalog.h"
+
+#include "common/EmbeddedFiles.h"
+#include "md/MdModel.h"
+
+#include <filesystem>
+
+namespace pl {
+
+namespace {
+constexpr std::string_view kPresetPrefix = "presets/";
+constexpr std::string_view kPresetSuffix = ".json";
+} // namespace
+
+const std::vector<ModelInfo>& modelCatalog() {
+    static const std::vector<ModelInfo> list{{"gas", "Gas (molecular dynamics)", &MdParams::describe()}};
+    return list;
+}
+
+const std::vector<ParamSpec>* specsForModel(const std::string& kind) {
+    for (const auto& m : modelCatalog())
+        if (m.kind == kind) return m.specs;
+    return nullptr;
+}
+
+std::unique_ptr<Model> createModel(const std::string& kind) {
+    if (kind == "gas") return std::make_unique<MdModel>();
+    return nullptr;
+}
+
+const std::vector<BuiltinPreset>& builtinPresets() {
+    static const std::vector<BuiltinPreset> list = [] {
+        std::vector<BuiltinPreset> presets;
+        for (const auto& file : embeddedFiles()) {
+            if (!file.path.starts_with(kPresetPrefix) || !file.path.ends_with(kPresetSuffix)) continue;
+            const std::string stem = std::filesystem::path(std::string(file.path)).stem().string();
+            presets.push_back({stem, parsePreset(file.text, specsForModel, std::string(file.path))});
+        }
+        return presets;
+    }();
+    return list;
+}
+
+Preset loadPreset(const std::string& nameOrPath) {
+    for (const auto& p : builtinPresets())
+        if (p.name == nameOrPath) return p.preset;
+    if (!std::filesystem::exists(nameOrPath)) {
+        std::string names;
+        for (const auto& p : builtinPresets()) names += (names.empty() ? "" : ", ") + p.name;
+        throw PresetError("", "'" + nameOrPath + "' is neither a built-in preset (" + names + ") nor a file");
+    }
+    return readPresetFile(nameOrPath, specsForModel);
+}
+
+std::unique_ptr<Model> instantiate(const Preset& preset) {
+    auto model = createModel(preset.model);
+    if (!model) throw PresetError("model", "unknown model \"" + preset.model + "\"");
+    model->reset(preset);
+    return model;
+}
+
+} // namespace pl

@@ -1,0 +1,64 @@
+// The interface every scene's model offers to the CLI and the UI: parameters, stepping, observables.
+#pragma once
+
+#include "Histogram.h"
+#include "ParamSpec.h"
+#include "Preset.h"
+
+#include <cstdint>
+#include <optional>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace pl {
+
+// Why a model stopped: what failed, when, and what to change.
+struct ModelFailure {
+    std::string what;
+    std::int64_t step = 0;
+    double time = 0.0;
+    std::string hint;
+    std::string message() const;
+};
+
+struct NamedHistogram {
+    std::string name;   // e.g. "speed_a"
+    Histogram counts;   // measured
+    std::vector<double> theory; // theoretical density per bin centre (empty when none applies)
+};
+
+class Model {
+public:
+    virtual ~Model() = default;
+
+    virtual std::string kind() const = 0; // "gas"
+    virtual const std::vector<ParamSpec>& paramSpecs() const = 0;
+    virtual ParamValues params() const = 0;
+    // Validates every value first (ParamError, nothing applied). Values of specs marked appliesLive act
+    // at once; the others wait for reset().
+    virtual void setParams(const ParamValues& values) = 0;
+
+    // Rebuilds the initial state from a validated preset; throws PresetError on cross-field problems.
+    virtual void reset(const Preset& preset) = 0;
+    // Rebuilds from the current parameters, seed and obstacles.
+    virtual void reset() = 0;
+    virtual Preset toPreset() const = 0;
+
+    // Advances by one signed time step. Does nothing once failure() is set.
+    virtual void step() = 0;
+    virtual std::int64_t stepCount() const = 0;
+    virtual double time() const = 0;
+    virtual std::size_t particleCount() const = 0;
+    virtual std::optional<ModelFailure> failure() const = 0;
+
+    // One row of observables per call, matching seriesColumns(); may close accumulation windows.
+    virtual std::vector<std::string> seriesColumns() const = 0;
+    virtual std::vector<double> sampleSeries() = 0;
+    virtual std::vector<NamedHistogram> histograms() const = 0;
+
+    // Particle dump: CSV with a header line.
+    virtual void writeParticles(std::ostream& out) const = 0;
+};
+
+} // namespace pl

@@ -1,0 +1,129 @@
+// Validation, parsing and formatting of parameter values against their ParamSpec.
+#include "ParamSpec.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cstdlib>
+#include <cmath>
+#include <sstream>
+
+namespace pl {
+
+namespace {
+
+std::string number(double v) {
+    std::ostringstream out;
+    out.precision(12);
+    out << v;
+    return out.str();
+}
+
+std::string kindName(ParamKind kind) {
+    switch (kind) {
+    case ParamKind::Real: return "a number";
+    case ParamKind::Integer: return "an integer";
+    case ParamKind::Boolean: return "true or false";
+    case ParamKind::Choice: return "a string";
+    case ParamKind::Color: return "a colour string \"#rrggbb\"";
+    }
+    return "a value";
+}
+
+bool isHexColor(const std::string& s) {
+    return s.size() == 7 && s[0] == '#' &&
+           std::all_of(s.begin() + 1, s.end(), [](char c) { return std::isxdigit(static_cast<unsigned char>(c)); });
+}
+
+} // namespace
+
+std::string describeAllowed(const ParamSpec& spec) {
+    switch (spec.kind) {
+    case ParamKind::Real:
+    case ParamKind::Integer: {
+        std::string range = "[" + number(spec.min) + ", " + number(spec.max) + "]";
+        if (spec.nonZero) range += " except 0";
+        if (!spec.unit.empty()) range += " " + spec.unit;
+        return range;
+    }
+    case ParamKind::Boolean: return "true or false";
+    case ParamKind::Color: return "\"#rrggbb\"";
+    case ParamKind::Choice: {
+        std::string list = "one of: ";
+        for (std::size_t i = 0; i < spec.choices.size(); ++i) list += (i ? ", " : "") + spec.choices[i];
+        return list;
+    }
+    }
+    return {};
+}
+
+std::string checkValue(const ParamSpec& spec, const ParamValue& value) {
+    const std::string prefix = "'" + spec.key + "' ";
+    const std::string allowed = "allowed: " + describeAllowed(spec);
+    switch (spec.kind) {
+    case ParamKind::Real:
+    case ParamKind::Integer: {
+        if (!std::holds_alternative<double>(value))
+            return prefix + "must be " + kindName(spec.kind) + ", got " + formatValue(value) + " (" + allowed + ")";
+        const double v = std::get<double>(value);
+        if (!std::isfinite(v)) return prefix + "must be finite, got " + number(v) + " (" + allowed + ")";
+        if (spec.kind == ParamKind::Integer && v != std::floor(v))
+            return prefix + "must be an integer, got " + number(v) + " (" + allowed + ")";
+        if (v < spec.min || v > spec.max) return prefix + "is out of range: " + number(v) + " (" + allowed + ")";
+        if (spec.nonZero && v == 0.0) return prefix + "must not be 0 (" + allowed + ")";
+        return {};
+    }
+    case ParamKind::Boolean:
+        if (!std::holds_alternative<bool>(value)) return prefix + "must be true or false, got " + formatValue(value);
+        return {};
+    case ParamKind::Choice: {
+        if (!std::holds_alternative<std::string>(value))
+            return prefix + "must be a string, got " + formatValue(value) + " (" + allowed + ")";
+        const auto& s = std::get<std::string>(value);
+        if (std::find(spec.choices.begin(), spec.choices.end(), s) == spec.choices.end())
+            return prefix + "has no option \"" + s + "\" (" + allowed + ")";
+        return {};
+    }
+    case ParamKind::Color:
+        if (!std::holds_alternative<std::string>(value) || !isHexColor(std::get<std::string>(value)))
+            return prefix + "must be a colour like \"#3a7bd5\", got " + formatValue(value);
+        return {};
+    }
+    return {};
+}
+
+ParamValue parseValue(const ParamSpec& spec, std::string_view text) {
+    switch (spec.kind) {
+    case ParamKind::Real:
+    case ParamKind::Integer: {
+        const std::string s(text);
+        char* end = nullptr;
+        const double v = std::strtod(s.c_str(), &end);
+        if (s.empty() || end != s.c_str() + s.size())
+            throw ParamError(spec.key, "'" + spec.key + "' must be " + kindName(spec.kind) + ", got \"" + s +
+                                           "\" (allowed: " + describeAllowed(spec) + ")");
+        return v; // range, NaN and integrality are checkValue's job
+    }
+    case ParamKind::Boolean: {
+        if (text == "true" || text == "1" || text == "on" || text == "yes") return true;
+        if (text == "false" || text == "0" || text == "off" || text == "no") return false;
+        throw ParamError(spec.key, "'" + spec.key + "' must be true or false, got \"" + std::string(text) + "\"");
+    }
+    case ParamKind::Choice:
+    case ParamKind::Color: return std::string(text);
+    }
+    return std::string(text);
+}
+
+std::string formatValue(const ParamValue& value) {
+    if (const auto* d = std::get_if<double>(&value)) return number(*d);
+    if (const auto* b = std::get_if<bool>(&value)) return *b ? "true" : "false";
+    return "\"" + std::get<std::string>(value) + "\"";
+}
+
+const ParamSpec* findSpec(const std::vector<ParamSpec>& specs, std::string_view key) {
+    for (const auto& s : specs)
+        if (s.key == key) return &s;
+    return nullptr;
+}
+
+} // namespace pl

@@ -1,0 +1,120 @@
+// Parameter descriptions: the single list from which presets, the CLI's --set and the UI panels are made.
+#pragma once
+
+#include <functional>
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+namespace pl {
+
+enum class ParamKind { Real, Integer, Boolean, Choice, Color };
+
+// Integers are carried as exact doubles; choices and colours ("#rrggbb") as strings.
+using ParamValue = std::variant<double, bool, std::string>;
+using ParamValues = std::map<std::string, ParamValue>;
+
+struct ParamSpec {
+    std::string key;     // stable identifier used in preset files and on the command line
+    std::string label;   // short human name
+    std::string unit;    // empty when dimensionless
+    std::string group;   // panel section
+    std::string tooltip; // one sentence: what it does and a typical value
+    ParamKind kind = ParamKind::Real;
+    double min = 0.0; // inclusive bounds for Real and Integer
+    double max = 0.0;
+    double step = 0.0; // suggested UI increment
+    ParamValue defaultValue = 0.0;
+    std::vector<std::string> choices; // for Choice
+    bool nonZero = false;             // Real values that may be negative but never 0 (a signed time step)
+    bool appliesLive = false;         // false: takes effect on the next reset
+};
+
+// A parameter value that failed validation; key() names the offending parameter.
+class ParamError : public std::runtime_error {
+public:
+    ParamError(std::string key, const std::string& message)
+        : std::runtime_error(message), key_(std::move(key)) {}
+    const std::string& key() const { return key_; }
+
+private:
+    std::string key_;
+};
+
+// "[1e-06, 1000] M" or "one of: a, b, c" — used in every error message about a value.
+std::string describeAllowed(const ParamSpec& spec);
+
+// Empty when value is acceptable for spec, else a sentence naming the key, the value and what is allowed.
+std::string checkValue(const ParamSpec& spec, const ParamValue& value);
+
+// Parses command-line text ("0.5", "true", "rk4") into a value of spec's kind; throws ParamError.
+ParamValue parseValue(const ParamSpec& spec, std::string_view text);
+
+std::string formatValue(const ParamValue& value);
+
+const ParamSpec* findSpec(const std::vector<ParamSpec>& specs, std::string_view key);
+
+// Binds one spec to one member of a parameter struct P.
+template <class P> struct ParamField {
+    ParamSpec spec;
+    std::function<ParamValue(const P&)> get;
+    std::function<void(P&, const ParamValue&)> set;
+};
+
+template <class P> ParamField<P> bindReal(double P::*member, ParamSpec spec) {
+    spec.kind = ParamKind::Real;
+    return {std::move(spec), [member](const P& p) { return ParamValue{p.*member}; },
+            [member](P& p, const ParamValue& v) { p.*member = std::get<double>(v); }};
+}
+
+template <class P> ParamField<P> bindInteger(long long P::*member, ParamSpec spec) {
+    spec.kind = ParamKind::Integer;
+    return {std::move(spec), [member](const P& p) { return ParamValue{static_cast<double>(p.*member)}; },
+            [member](P& p, const ParamValue& v) { p.*member = static_cast<long long>(std::get<double>(v)); }};
+}
+
+template <class P> ParamField<P> bindBool(bool P::*member, ParamSpec spec) {
+    spec.kind = ParamKind::Boolean;
+    return {std::move(spec), [member](const P& p) { return ParamValue{p.*member}; },
+            [member](P& p, const ParamValue& v) { p.*member = std::get<bool>(v); }};
+}
+
+template <class P> ParamField<P> bindText(std::string P::*member, ParamSpec spec) {
+    return {std::move(spec), [member](const P& p) { return ParamValue{p.*member}; },
+            [member](P& p, const ParamValue& v) { p.*member = std::get<std::string>(v); }};
+}
+
+template <class P> std::vector<ParamSpec> specsOf(const std::vector<ParamField<P>>& fields) {
+    std::vector<ParamSpec> specs;
+    for (const auto& f : fields) specs.push_back(f.spec);
+    return specs;
+}
+
+template <class P> ParamValues valuesOf(const P& params, const std::vector<ParamField<P>>& fields) {
+    ParamValues values;
+    for (const auto& f : fields) values[f.spec.key] = f.get(params);
+    return values;
+}
+
+// Returns base with values applied. Every value is checked before any is applied, so on ParamError the
+// caller's parameters are untouched.
+template <class P>
+P withValues(const P& base, const std::vector<ParamField<P>>& fields, const ParamValues& values) {
+    std::vector<std::pair<const ParamField<P>*, const ParamValue*>> checked;
+    for (const auto& [key, value] : values) {
+        const ParamField<P>* field = nullptr;
+        for (const auto& f : fields)
+            if (f.spec.key == key) field = &f;
+        if (!field) throw ParamError(key, "unknown parameter '" + key + "'");
+        if (auto problem = checkValue(field->spec, value); !problem.empty()) throw ParamError(key, problem);
+        checked.emplace_back(field, &value);
+    }
+    P result = base;
+    for (const auto& [field, value] : checked) field->set(result, *value);
+    return result;
+}
+
+} // namespace pl

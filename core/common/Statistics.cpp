@@ -1,0 +1,55 @@
+// Rayleigh distribution, KS distance and power-law fits (least squares via Eigen).
+#include "Statistics.h"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace pl {
+
+double rayleighPdf(double v, double kT, double mass) {
+    if (v < 0 || kT <= 0) return 0.0;
+    const double a = mass / kT;
+    return a * v * std::exp(-0.5 * a * v * v);
+}
+
+double rayleighCdf(double v, double kT, double mass) {
+    if (v <= 0 || kT <= 0) return 0.0;
+    return -std::expm1(-0.5 * mass * v * v / kT);
+}
+
+double ksDistance(std::vector<double>& sample, const std::function<double(double)>& cdf) {
+    if (sample.empty()) return 0.0;
+    std::sort(sample.begin(), sample.end());
+    const double n = static_cast<double>(sample.size());
+    double d = 0.0;
+    for (std::size_t i = 0; i < sample.size(); ++i) {
+        const double f = cdf(sample[i]);
+        d = std::max({d, (static_cast<double>(i) + 1.0) / n - f, f - static_cast<double>(i) / n});
+    }
+    return d;
+}
+
+double ksCritical(double n, double significance) {
+    // Asymptotic Kolmogorov quantiles (physics.md §1).
+    const double c = significance <= 0.01 ? 1.628 : 1.358;
+    return c / std::sqrt(n);
+}
+
+PowerLawFit fitPowerLaw(const std::vector<double>& x, const std::vector<double>& y) {
+    if (x.size() != y.size() || x.size() < 2) throw std::invalid_argument("power-law fit needs two or more points");
+    Eigen::MatrixXd design(static_cast<Eigen::Index>(x.size()), 2);
+    Eigen::VectorXd rhs(static_cast<Eigen::Index>(x.size()));
+    for (std::size_t i = 0; i < x.size(); ++i) {
+        if (x[i] <= 0 || y[i] <= 0) throw std::invalid_argument("power-law fit needs positive data");
+        const auto r = static_cast<Eigen::Index>(i);
+        design(r, 0) = 1.0;
+        design(r, 1) = std::log(x[i]);
+        rhs(r) = std::log(y[i]);
+    }
+    const Eigen::Vector2d coef = design.colPivHouseholderQr().solve(rhs);
+    return {coef(1), std::exp(coef(0))};
+}
+
+} // namespace pl

@@ -1,0 +1,156 @@
+// Walls, piston and obstacles: mirror reflection of disk centres, thermal walls, wall impulses.
+#include "MdKernels.h"
+#include "MdModel.h"
+#include "common/Philox.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace pl {
+
+namespace {
+
+// Velocity of a disk leaving a thermal wall: the normal component follows the flux-weighted
+// distribution p(v_n) ∝ v_n exp(−m v_n² / 2kT) (a Rayleigh variate), the tangential one is Gaussian.
+struct WallVelocity {
+    double normal, tangential;
+};
+
+WallVelocity thermalWallVelocity(double kT, double mass, const Philox4x32& words) {
+    const double sigma = std::sqrt(kT / mass);
+    const double normal = sigma * std::sqrt(-2.0 * std::log(unitOpen(words[0], words[1])));
+    const double gaussian = std::sqrt(-2.0 * std::log(unitOpen32(words[2]))) *
+                            std::cos(2.0 * std::numbers::pi * unitOpen32(words[3]));
+    return {normal, sigma * gaussian};
+}
+
+// Where the straight path p0 → p0 + Δ enters an obstacle grown by radius: path fraction s ∈ [0, 1] and
+// the outward normal there. False when p0 is inside or the path misses.
+bool pathEntry(const Obstacle& o, double radius, double x0, double y0, double dx, double dy, double& s,
+               double& nx, double& ny) {
+    if (o.shape == Obstacle::Shape::Disc) {
+        const double grown = o.radius + radius;
+        const double rx = x0 - o.x, ry = y0 - o.y;
+        const double a = dx * dx + dy * dy, b = 2.0 * (dx * rx + dy * ry), c = rx * rx + ry * ry - grown * grown;
+        const double discriminant = b * b - 4.0 * a * c;
+        if (a == 0.0 || c < 0.0 || discriminant < 0.0) return false;
+        s = (-b - std::sqrt(discriminant)) / (2.0 * a);
+        nx = (rx + s * dx) / grown;
+        ny = (ry + s * dy) / grown;
+    } else {
+        // Slab method: the entry is the latest of the per-axis entries into the grown rectangle.
+        const double halfW = o.halfWidth + radius, halfH = o.halfHeight + radius;
+        double sx = -1.0, sy = -1.0;
+        if (x0 < o.x - halfW && dx > 0) sx = (o.x - halfW - x0) / dx;
+        if (x0 > o.x + halfW && dx < 0) sx = (o.x + halfW - x0) / dx;
+        if (y0 < o.y - halfH && dy > 0) sy = (o.y - halfH - y0) / dy;
+        if (y0 > o.y + halfH && dy < 0) sy = (o.y + halfH - y0) / dy;
+        if (sx < 0 && sy < 0) return false;
+        s = std::max(sx, sy);
+        nx = s == sx ? (dx > 0 ? -1.0 : 1.0) : 0.0;
+        ny = s == sx ? 0.0 : (dy > 0 ? -1.0 : 1.0);
+    }
+    return s >= 0.0 && s <= 1.0;
+}
+
+// Reflects the velocity relative to the obstacle's own (a moving obstacle imparts its motion) when the
+// disk approaches the surface in the drift's direction of time.
+void reflectOffObstacle(const Obstacle& o, double nx, double ny, double timeSign, double& vx, double& vy) {
+    const double wn = (vx - o.vx) * nx + (vy - o.vy) * ny;
+    if (wn * timeSign < 0) {
+        vx -= 2.0 * wn * nx;
+        vy -= 2.0 * wn * ny;
+    }
+}
+
+// A disk centre that ended a drift of length h inside an obstacle: reflect it where its path entered
+// and let it travel the rest of the drift with the new velocity. Reflecting at the true entry point
+// (rather than mirroring the end point) retraces exactly under −h. A disk that was already inside,
+// because the obstacle was dragged onto it, is pushed out the shortest way.
+void collideObstacle(const Obstacle& o, double radius, double h, double& x, double& y, double& vx, double& vy) {
+    if (!o.contains(x, y, radius)) return;
+    const double timeSign = h >= 0 ? 1.0 : -1.0;
+    const double dx = h * vx, dy = h * vy;
+    double s = 0, nx = 0, ny = 0;
+    if (pathEntry(o, radius, x - dx, y - dy, dx, dy, s, nx, ny)) {
+        const double hitX = x - dx + s * dx, hitY = y - dy + s * dy;
+        reflectOffObstacle(o, nx, ny, timeSign, vx, vy);
+        x = hitX + (1.0 - s) * h * vx;
+        y = hitY + (1.0 - s) * h * vy;
+        return;
+    }
+    double depth = 0;
+    const double rx = x - o.x, ry = y - o.y;
+    if (o.shape == Obstacle::Shape::Disc) {
+        const double dist = std::hypot(rx, ry);
+        nx = dist > 0 ? rx / dist : 1.0;
+        ny = dist > 0 ? ry / dist : 0.0;
+        depth = o.radius + radius - dist;
+    } else {
+        const double penX = o.halfWidth + radius - std::abs(rx), penY = o.halfHeight + radius - std::abs(ry);
+        if (penX < penY) nx = rx >= 0 ? 1.0 : -1.0, depth = penX;
+        else ny = ry >= 0 ? 1.0 : -1.0, depth = penY;
+    }
+    x += 2.0 * depth * nx;
+    y += 2.0 * depth * ny;
+    reflectOffObstacle(o, nx, ny, 1.0, vx, vy);
+}
+
+} // namespace
+
+void MdModel::applyBoundaries(double h) {
+    MdState& s = state_;
+    const double left = params_.left(), right = params_.right();
+    const double bottom = params_.bottom(), top = params_.top();
+    const bool thermal = params_.wallMode == "thermal";
+    const bool thermalRight = thermal && !params_.pistonEnabled;
+    const double wallKT = params_.wallKT;
+    const double pistonU = params_.pistonEnabled ? pistonVelocity_ : 0.0;
+    const double mass[2] = {params_.a.mass, params_.b.mass};
+    const double radius[2] = {0.5 * params_.a.diameter, 0.5 * params_.b.diameter};
+    const double timeSign = h >= 0 ? 1.0 : -1.0; // a crossing in backward time undoes an impulse
+    const std::uint64_t drawIndex = static_cast<std::uint64_t>(step_) * 8 + driftIndex_;
+    const auto count = static_cast<long long>(s.size());
+    bool escaped = false;
+
+#pragma omp parallel for schedule(static) reduction(|| : escaped)
+    for (long long i = 0; i < count; ++i) {
+        double& x = s.x[i];
+        double& y = s.y[i];
+        double& vx = s.vx[i];
+        double& vy = s.vy[i];
+        const double m = mass[s.species[i]];
+        const double vxIn = vx, vyIn = vy;
+        const double hitLeft = md::reflectPlane(x, vx, left, -1.0, 0.0, timeSign);
+        const double hitRight = md::reflectPlane(x, vx, right, 1.0, pistonU, timeSign);
+        const double hitBottom = md::reflectPlane(y, vy, bottom, -1.0, 0.0, timeSign);
+        const double hitTop = md::reflectPlane(y, vy, top, 1.0, 0.0, timeSign);
+        if (thermal && (hitLeft != 0 || (thermalRight && hitRight != 0) || hitBottom != 0 || hitTop != 0)) {
+            const auto v = thermalWallVelocity(wallKT, m, randomWords(seed_, RngPurpose::ThermalWall, s.id[i], drawIndex));
+            if (hitLeft != 0 || hitRight != 0) {
+                vx = (hitLeft != 0 ? 1.0 : -1.0) * v.normal;
+                vy = v.tangential;
+            } else {
+                vy = (hitBottom != 0 ? 1.0 : -1.0) * v.normal;
+                vx = v.tangential;
+            }
+        }
+        // Normal momentum handed to the walls: m |Δv_n| for every wall that was crossed.
+        double impulse = 0.0;
+        if (hitLeft != 0 || hitRight != 0) impulse += std::abs(vx - vxIn);
+        if (hitBottom != 0 || hitTop != 0) impulse += std::abs(vy - vyIn);
+        s.wallImpulse[i] += timeSign * m * impulse;
+
+        // A disk still outside after one mirror moved farther than the box in one step: a blow-up.
+        if (!(x >= left && x <= right && y >= bottom && y <= top)) escaped = true;
+
+        for (const auto& o : obstacles_) collideObstacle(o, radius[s.species[i]], h, x, y, vx, vy);
+        // An obstacle touching a wall may push a disk against it: keep the centre in the box.
+        x = std::isfinite(x) ? std::clamp(x, left, right) : 0.0;
+        y = std::isfinite(y) ? std::clamp(y, bottom, top) : 0.0;
+    }
+    escaped_ = escaped_ || escaped;
+}
+
+} // namespace pl

@@ -1,0 +1,187 @@
+// MdModel: parameters, reset, the step's table of contents, obstacles and the piston.
+#include "MdModel.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace pl {
+
+MdIntegrator integratorFromName(const std::string& name) {
+    if (name == "velocity-verlet") return MdIntegrator::VelocityVerlet;
+    if (name == "symplectic-euler") return MdIntegrator::SymplecticEuler;
+    if (name == "explicit-euler") return MdIntegrator::ExplicitEuler;
+    if (name == "rk4") return MdIntegrator::RungeKutta4;
+    if (name == "forest-ruth") return MdIntegrator::ForestRuth;
+    throw std::invalid_argument("unknown integrator '" + name + "'");
+}
+
+MdModel::MdModel() { reset(); }
+
+ParamValues MdModel::params() const { return valuesOf(params_, MdParams::fields()); }
+
+void MdModel::setParams(const ParamValues& values) {
+    MdParams next = withValues(params_, MdParams::fields(), values);
+    next.validate();
+    const MdParams before = params_;
+    params_ = next;
+    integrator_ = integratorFromName(params_.integrator);
+    if (params_.pistonEnabled != before.pistonEnabled || params_.pistonX != before.pistonX) {
+        pistonVelocity_ = 0.0;
+        configureCells();
+    }
+    forcesValid_ = false; // stiffness, gravity or the force method may have changed
+    ensureForces();
+    rebaseEnergy();
+}
+
+void MdModel::reset(const Preset& preset) {
+    if (preset.model != kind()) throw PresetError("model", "preset is for model '" + preset.model + "', not gas");
+    MdParams next;
+    try {
+        next = withValues(MdParams{}, MdParams::fields(), preset.params);
+        next.validate();
+    } catch (const ParamError& e) {
+        throw PresetError("params." + e.key(), e.what());
+    }
+    for (std::size_t i = 0; i < preset.obstacles.size(); ++i) {
+        const auto& o = preset.obstacles[i];
+        if (o.x < next.left() || o.x > next.right() || o.y < next.bottom() || o.y > next.top())
+            throw PresetError("obstacles[" + std::to_string(i) + "]",
+                              "obstacles[" + std::to_string(i) + "] has its centre outside the box");
+    }
+    params_ = next;
+    seed_ = preset.seed;
+    obstacles_ = preset.obstacles;
+    reset();
+}
+
+void MdModel::reset() {
+    integrator_ = integratorFromName(params_.integrator);
+    step_ = 0;
+    time_ = 0.0;
+    lastSampleTime_ = 0.0;
+    spawnEvents_ = 0;
+    pistonVelocity_ = 0.0;
+    escaped_ = false;
+    failure_.reset();
+    wallWindow_.clear();
+    for (auto& o : obstacles_) o.vx = o.vy = 0.0;
+    buildInitialState();
+    configureCells();
+    forcesValid_ = false;
+    ensureForces();
+    energyBaseline_ = referenceEnergy_ = totalEnergy();
+}
+
+Preset MdModel::toPreset() const {
+    Preset p;
+    p.model = kind();
+    p.seed = seed_;
+    p.params = params();
+    p.obstacles = obstacles_;
+    return p;
+}
+
+void MdModel::step() {
+    if (failure_) return;
+    ensureForces();
+    std::copy(state_.x.begin(), state_.x.end(), xPrev_.begin());
+    std::copy(state_.y.begin(), state_.y.end(), yPrev_.begin());
+    driftIndex_ = 0;
+    const double h = params_.dt;
+    switch (integrator_) {
+    case MdIntegrator::VelocityVerlet: stepVelocityVerlet(h); break;
+    case MdIntegrator::SymplecticEuler: stepSymplecticEuler(h); break;
+    case MdIntegrator::ExplicitEuler: stepExplicitEuler(h); break;
+    case MdIntegrator::RungeKutta4: stepRungeKutta4(h); break;
+    case MdIntegrator::ForestRuth: stepForestRuth(h); break;
+    }
+    ++step_;
+    time_ += h;
+    constexpr std::int64_t kEnergyCheckInterval = 64; // an O(N) serial sum: cheap at this rate
+    checkHealth(step_ % kEnergyCheckInterval == 0);
+}
+
+void MdModel::ensureForces() {
+    if (forcesValid_) return;
+    xPrev_ = state_.x; // no contact began "during" a recomputation
+    yPrev_ = state_.y;
+    computeForces(false);
+}
+
+void MdModel::recomputeForces() {
+    forcesValid_ = false;
+    ensureForces();
+}
+
+void MdModel::configureCells() {
+    // Cells at least one contact diameter wide; wider in dilute gases so that the grid stays about one
+    // cell per disk (the grid is cleared and scanned every step).
+    const double area = params_.boxWidth * params_.boxHeight;
+    const double perDisk = std::sqrt(area / std::max<double>(1.0, static_cast<double>(state_.size())));
+    const double size = std::max(params_.maxDiameter(), perDisk);
+    cells_.configure(params_.left(), params_.bottom(), 0.5 * params_.boxWidth, params_.top(), size);
+}
+
+void MdModel::addObstacle(const Obstacle& obstacle) {
+    obstacles_.push_back(obstacle);
+    forcesValid_ = false;
+    ensureForces();
+    rebaseEnergy();
+}
+
+void MdModel::removeObstacle(std::size_t index) {
+    if (index >= obstacles_.size()) throw std::out_of_range("no obstacle " + std::to_string(index));
+    obstacles_.erase(obstacles_.begin() + static_cast<std::ptrdiff_t>(index));
+    rebaseEnergy();
+}
+
+void MdModel::moveObstacle(std::size_t index, double x, double y, double vx, double vy) {
+    if (index >= obstacles_.size()) throw std::out_of_range("no obstacle " + std::to_string(index));
+    auto& o = obstacles_[index];
+    o.x = std::clamp(x, params_.left(), params_.right());
+    o.y = std::clamp(y, params_.bottom(), params_.top());
+    o.vx = vx;
+    o.vy = vy;
+    rebaseEnergy();
+}
+
+void MdModel::movePiston(double x, double velocity) {
+    if (!params_.pistonEnabled) throw std::logic_error("the piston is not enabled (piston_enabled = false)");
+    params_.pistonX = std::clamp(x, params_.left() + params_.maxDiameter(), 0.5 * params_.boxWidth);
+    pistonVelocity_ = velocity;
+    rebaseEnergy();
+}
+
+std::vector<std::string> MdModel::seriesColumns() const {
+    return {"step",     "time",     "particles", "kinetic",         "potential",     "total",
+            "kT",       "kT_a",     "kT_b",      "px",              "py",            "pressure_virial",
+            "pressure_wall", "pressure_ideal", "ks_a", "ks_b", "collision_rate", "energy_drift"};
+}
+
+std::vector<double> MdModel::sampleSeries() {
+    const MdObservables o = observe();
+    return {static_cast<double>(o.step), o.time, static_cast<double>(o.particles), o.kinetic, o.potential,
+            o.total, o.kT, o.kTSpecies[0], o.kTSpecies[1], o.px, o.py, o.pressureVirial, o.pressureWall,
+            o.pressureIdeal, o.ksDistance[0], o.ksDistance[1], o.collisionRate, o.energyDrift};
+}
+
+std::vector<NamedHistogram> MdModel::histograms() const {
+    std::vector<NamedHistogram> list;
+    if (params_.a.count > 0 || std::count(state_.species.begin(), state_.species.end(), 0) > 0)
+        list.push_back(speedHistogram(0));
+    if (std::count(state_.species.begin(), state_.species.end(), 1) > 0) list.push_back(speedHistogram(1));
+    return list;
+}
+
+void MdModel::writeParticles(std::ostream& out) const {
+    const auto precision = out.precision(17);
+    out << "id,species,x,y,vx,vy\n";
+    for (std::size_t i = 0; i < state_.size(); ++i)
+        out << state_.id[i] << ',' << int(state_.species[i]) << ',' << state_.x[i] << ',' << state_.y[i] << ','
+            << state_.vx[i] << ',' << state_.vy[i] << '\n';
+    out.precision(precision);
+}
+
+} // namespace pl

@@ -1,0 +1,160 @@
+// The soft-disk gas: OpenMP CPU reference model. step() reads like the integrator's table of contents.
+#pragma once
+
+#include "MdParams.h"
+#include "MdState.h"
+#include "common/CellList.h"
+#include "common/Model.h"
+#include "common/Obstacle.h"
+
+#include <array>
+#include <deque>
+#include <optional>
+
+namespace pl {
+
+enum class MdIntegrator { VelocityVerlet, SymplecticEuler, ExplicitEuler, RungeKutta4, ForestRuth };
+MdIntegrator integratorFromName(const std::string& name);
+
+struct MdObservables {
+    std::int64_t step = 0;
+    double time = 0;
+    std::size_t particles = 0;
+    double kinetic = 0, potential = 0, total = 0; // [energy]; potential includes gravity
+    double kT = 0;                                // kinetic energy per disk (2 degrees of freedom)
+    std::array<double, 2> kTSpecies{};            // NaN for an absent species
+    double px = 0, py = 0;                        // total momentum [M·L/T]
+    double pressureVirial = 0;                    // (N kT + ½ Σ r·f) / A, instantaneous [energy/L²]
+    double pressureWall = 0;                      // wall impulse / (perimeter × time) over the window; NaN before any time passed
+    double pressureIdeal = 0;                     // N kT / A
+    std::array<double, 2> ksDistance{};           // KS distance of speeds to 2D Maxwell–Boltzmann at measured kT
+    double collisionRate = 0;                     // contacts begun per unit time since the last sample
+    double energyDrift = 0;                       // |E − E₀| / |E₀| since the last reset or user change
+};
+
+struct MdParticle {
+    double x, y, vx, vy;
+    int species = 0;
+};
+
+struct SpawnResult {
+    long long added = 0;
+    long long refusedOverlap = 0; // would overlap an existing disk beyond spawn_max_overlap
+    long long refusedOutside = 0; // outside the box or inside an obstacle
+    long long refusedCap = 0;     // beyond max_particles
+    std::string message() const;
+};
+
+class MdModel : public Model {
+public:
+    MdModel();
+
+    // Model interface
+    std::string kind() const override { return "gas"; }
+    const std::vector<ParamSpec>& paramSpecs() const override { return MdParams::describe(); }
+    ParamValues params() const override;
+    void setParams(const ParamValues& values) override;
+    void reset(const Preset& preset) override;
+    void reset() override;
+    Preset toPreset() const override;
+    void step() override;
+    std::int64_t stepCount() const override { return step_; }
+    double time() const override { return time_; }
+    std::size_t particleCount() const override { return state_.size(); }
+    std::optional<ModelFailure> failure() const override { return failure_; }
+    std::vector<std::string> seriesColumns() const override;
+    std::vector<double> sampleSeries() override;
+    std::vector<NamedHistogram> histograms() const override;
+    void writeParticles(std::ostream& out) const override;
+
+    // Gas-specific API
+    const MdParams& parameters() const { return params_; }
+    const MdState& state() const { return state_; }
+    MdObservables observe(); // closes the wall-impulse and contact windows
+    double totalEnergy() const; // kinetic + pair + gravity energy of the current state, no side effects
+    NamedHistogram speedHistogram(int species) const;
+
+    const std::vector<Obstacle>& obstacles() const { return obstacles_; }
+    void addObstacle(const Obstacle& obstacle);
+    void removeObstacle(std::size_t index);
+    // Moves an obstacle between steps; velocity [L/T] is what it imparts on disks it hits.
+    void moveObstacle(std::size_t index, double x, double y, double vx, double vy);
+    // Moves the piston between steps with the given velocity [L/T]; x is clamped into the box.
+    void movePiston(double x, double velocity);
+
+    SpawnResult spawnRectangle(double x0, double y0, double x1, double y1, int species, double kT);
+    SpawnResult spawnAt(double x, double y, int species, double kT);
+    // Replaces the whole population (analytic set-ups, shared initial states); time and counters restart.
+    void placeParticles(const std::vector<MdParticle>& particles);
+    long long removeInRectangle(double x0, double y0, double x1, double y1);
+    long long removeNear(double x, double y, double radius);
+
+    // Force on every particle at the current positions (for tests and the parity checks).
+    void recomputeForces();
+
+private:
+    // Integrators (MdIntegrators.cpp): one step each, all ending with forces at the new positions.
+    void stepVelocityVerlet(double h);
+    void stepSymplecticEuler(double h);
+    void stepExplicitEuler(double h);
+    void stepRungeKutta4(double h);
+    void stepForestRuth(double h);
+
+    // Stages
+    void kick(double h);                      // v += h a
+    void drift(double h);                     // x += h v, then walls and obstacles
+    void computeForces(bool countContacts);   // a, potential, virial at the current positions
+    void computeForcesCellList(bool countContacts);
+    void computeForcesAllPairs(bool countContacts);
+    void applyBoundaries(double h);           // reflections, thermal walls, impulses
+    void ensureForces();
+
+    // State building (MdInitialState.cpp)
+    void buildInitialState();
+    void placeRandom(long long first, long long count, int species);
+    void placeLattice();
+    void assignVelocities();
+    void configureCells();
+
+    // Health (MdStability.cpp)
+    void checkHealth(bool energyCheck);
+    void fail(const std::string& what, const std::string& hint);
+    std::string stabilityHint() const;
+    void rebaseEnergy(); // after a user change: the new energy is the reference
+
+    void populationChanged(); // after spawning or removing: counts, cells, forces, energy reference
+    bool overlapsTooMuch(double x, double y, double diameter) const;
+    bool insideSpace(double x, double y, double radius) const;
+    std::uint32_t nextId() { return nextId_++; }
+
+    MdParams params_;
+    std::uint64_t seed_ = 1;
+    std::vector<Obstacle> obstacles_;
+    MdIntegrator integrator_ = MdIntegrator::VelocityVerlet;
+
+    MdState state_;
+    std::vector<double> xPrev_, yPrev_;     // positions at the start of the step (contact detection)
+    std::vector<double> sortedX_, sortedY_; // positions in cell order for the neighbour loops
+    std::vector<double> stageX_, stageY_, stageVX_, stageVY_, sumVX_, sumVY_, sumAX_, sumAY_; // RK4
+    CellList cells_;
+    bool forcesValid_ = false;
+    bool escaped_ = false;
+    double pistonVelocity_ = 0.0;
+
+    std::int64_t step_ = 0;
+    double time_ = 0.0;
+    std::uint32_t nextId_ = 0;
+    std::uint64_t spawnEvents_ = 0;
+    std::uint32_t driftIndex_ = 0; // distinguishes thermal-wall draws of several drifts in one step
+
+    double energyBaseline_ = 0.0;  // E₀ of energyDrift
+    double referenceEnergy_ = 0.0; // blow-up reference
+    double lastSampleTime_ = 0.0;
+    struct WallSample {
+        double impulse, duration, perimeterTime;
+    };
+    std::deque<WallSample> wallWindow_;
+    std::optional<ModelFailure> failure_;
+};
+
+} // namespace pl

@@ -1,0 +1,104 @@
+// Observables of the gas: energies, kT per species, momentum, virial and wall pressure, KS distance to
+// the 2D Maxwell–Boltzmann distribution, contact rate, speed histograms. Sums are serial (deterministic).
+#include "MdModel.h"
+#include "common/Statistics.h"
+
+#include <cmath>
+#include <limits>
+
+namespace pl {
+
+namespace {
+constexpr double kHistogramSigmas = 5.0; // speed histogram range: 0 … 5 √(kT/m) holds all but e^{-12.5}
+const double kNaN = std::numeric_limits<double>::quiet_NaN();
+} // namespace
+
+MdObservables MdModel::observe() {
+    ensureForces();
+    MdObservables o;
+    o.step = step_;
+    o.time = time_;
+    o.particles = state_.size();
+    const double mass[2] = {params_.a.mass, params_.b.mass};
+    double kineticSpecies[2] = {0, 0};
+    long long countSpecies[2] = {0, 0};
+    double virial = 0, impulse = 0;
+    long long began = 0;
+    for (std::size_t i = 0; i < state_.size(); ++i) {
+        const int s = state_.species[i];
+        const double m = mass[s];
+        kineticSpecies[s] += 0.5 * m * (state_.vx[i] * state_.vx[i] + state_.vy[i] * state_.vy[i]);
+        ++countSpecies[s];
+        o.potential += state_.potential[i] + m * params_.gravity * (state_.y[i] - params_.bottom());
+        o.px += m * state_.vx[i];
+        o.py += m * state_.vy[i];
+        virial += state_.virial[i];
+        impulse += state_.wallImpulse[i];
+        began += state_.contactsBegun[i];
+        state_.wallImpulse[i] = 0.0;
+        state_.contactsBegun[i] = 0;
+    }
+    o.kinetic = kineticSpecies[0] + kineticSpecies[1];
+    o.total = o.kinetic + o.potential;
+    const auto n = static_cast<double>(state_.size());
+    // Reflecting walls do not conserve momentum: 2 degrees of freedom per disk (physics.md §1).
+    o.kT = n > 0 ? o.kinetic / n : 0.0;
+    for (int s = 0; s < 2; ++s) o.kTSpecies[s] = countSpecies[s] > 0 ? kineticSpecies[s] / countSpecies[s] : kNaN;
+
+    double area = (params_.right() - params_.left()) * params_.boxHeight;
+    for (const auto& ob : obstacles_) area -= ob.grownArea(0.5 * params_.a.diameter);
+    // Virial pressure (physics.md §1): P A = N kT + ½ Σ_{i<j} r_ij·f_ij.
+    o.pressureIdeal = n * o.kT / area;
+    o.pressureVirial = (n * o.kT + virial) / area;
+
+    // Wall pressure: impulse per unit wall length per unit time over the last pressure_window.
+    const double elapsed = time_ - lastSampleTime_;
+    const double perimeter = 2.0 * (params_.right() - params_.left()) + 2.0 * params_.boxHeight;
+    if (elapsed != 0.0) wallWindow_.push_back({impulse, elapsed, perimeter * elapsed});
+    double windowTime = 0.0;
+    for (const auto& w : wallWindow_) windowTime += std::abs(w.duration);
+    while (wallWindow_.size() > 1 && windowTime - std::abs(wallWindow_.front().duration) >= params_.pressureWindow) {
+        windowTime -= std::abs(wallWindow_.front().duration);
+        wallWindow_.pop_front();
+    }
+    double windowImpulse = 0.0, windowPerimeterTime = 0.0;
+    for (const auto& w : wallWindow_) windowImpulse += w.impulse, windowPerimeterTime += w.perimeterTime;
+    o.pressureWall = windowPerimeterTime != 0.0 ? windowImpulse / windowPerimeterTime : kNaN;
+
+    o.collisionRate = elapsed != 0.0 ? 0.5 * static_cast<double>(began) / std::abs(elapsed) : 0.0;
+    lastSampleTime_ = time_;
+
+    for (int s = 0; s < 2; ++s) {
+        o.ksDistance[s] = kNaN;
+        if (countSpecies[s] < 2 || !(o.kTSpecies[s] > 0)) continue;
+        std::vector<double> speeds;
+        speeds.reserve(static_cast<std::size_t>(countSpecies[s]));
+        for (std::size_t i = 0; i < state_.size(); ++i)
+            if (state_.species[i] == s) speeds.push_back(std::hypot(state_.vx[i], state_.vy[i]));
+        const double kT = o.kTSpecies[s], m = mass[s];
+        o.ksDistance[s] = ksDistance(speeds, [kT, m](double v) { return rayleighCdf(v, kT, m); });
+    }
+    o.energyDrift = energyBaseline_ != 0.0 ? std::abs(o.total - energyBaseline_) / std::abs(energyBaseline_) : 0.0;
+    return o;
+}
+
+NamedHistogram MdModel::speedHistogram(int species) const {
+    const double m = params_.species(species).mass;
+    double kinetic = 0.0;
+    long long count = 0;
+    for (std::size_t i = 0; i < state_.size(); ++i) {
+        if (state_.species[i] != species) continue;
+        kinetic += 0.5 * m * (state_.vx[i] * state_.vx[i] + state_.vy[i] * state_.vy[i]);
+        ++count;
+    }
+    const double kT = count > 0 ? kinetic / count : 0.0;
+    const double vmax = kT > 0 ? kHistogramSigmas * std::sqrt(kT / m) : 1.0;
+    NamedHistogram h{species == 0 ? "speed_a" : "speed_b",
+                     Histogram(0.0, vmax, static_cast<std::size_t>(params_.histogramBins)), {}};
+    for (std::size_t i = 0; i < state_.size(); ++i)
+        if (state_.species[i] == species) h.counts.add(std::hypot(state_.vx[i], state_.vy[i]));
+    for (std::size_t b = 0; b < h.counts.bins(); ++b) h.theory.push_back(rayleighPdf(h.counts.binCentre(b), kT, m));
+    return h;
+}
+
+} // namespace pl

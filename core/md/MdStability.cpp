@@ -1,0 +1,96 @@
+// Blow-up detection and the hints that explain it (stability limits from physics.md §1).
+#include "MdKernels.h"
+#include "MdModel.h"
+
+#include <cmath>
+#include <sstream>
+
+namespace pl {
+
+namespace {
+
+// Largest ω·dt for which each scheme is stable on x'' = −ω² x (physics.md §1; Forest–Ruth from its
+// amplification matrix, about 1.57). Explicit Euler has none.
+double stabilityLimit(MdIntegrator integrator) {
+    switch (integrator) {
+    case MdIntegrator::VelocityVerlet:
+    case MdIntegrator::SymplecticEuler: return 2.0;
+    case MdIntegrator::RungeKutta4: return 2.0 * std::sqrt(2.0);
+    case MdIntegrator::ForestRuth: return 1.5734;
+    case MdIntegrator::ExplicitEuler: return 0.0;
+    }
+    return 0.0;
+}
+
+std::string fixed(double v, int digits) {
+    std::ostringstream out;
+    out.setf(std::ios::fixed);
+    out.precision(digits);
+    out << v;
+    return out.str();
+}
+
+} // namespace
+
+double MdModel::totalEnergy() const {
+    double kinetic = 0.0, potential = 0.0;
+    const double mass[2] = {params_.a.mass, params_.b.mass};
+    for (std::size_t i = 0; i < state_.size(); ++i) {
+        const double m = mass[state_.species[i]];
+        kinetic += 0.5 * m * (state_.vx[i] * state_.vx[i] + state_.vy[i] * state_.vy[i]);
+        potential += state_.potential[i] + m * params_.gravity * (state_.y[i] - params_.bottom());
+    }
+    return kinetic + potential;
+}
+
+void MdModel::rebaseEnergy() {
+    const double e = totalEnergy();
+    energyBaseline_ = e;
+    referenceEnergy_ = std::max(referenceEnergy_, e);
+}
+
+void MdModel::fail(const std::string& what, const std::string& hint) {
+    failure_ = ModelFailure{what, step_, time_, hint};
+}
+
+std::string MdModel::stabilityHint() const {
+    double omega = 0.0; // stiffest contact: the smallest reduced mass present
+    const bool hasA = params_.a.count > 0, hasB = params_.b.count > 0;
+    if (hasA || !hasB) omega = std::max(omega, md::contactOmega(params_.stiffness, params_.a.mass, params_.a.mass));
+    if (hasB) omega = std::max(omega, md::contactOmega(params_.stiffness, params_.b.mass, params_.b.mass));
+    if (hasA && hasB) omega = std::max(omega, md::contactOmega(params_.stiffness, params_.a.mass, params_.b.mass));
+    const double wdt = omega * std::abs(params_.dt);
+    const double limit = stabilityLimit(integrator_);
+    const std::string name = params_.integrator;
+    if (integrator_ == MdIntegrator::ExplicitEuler)
+        return "explicit Euler gains energy every step (factor 1 + ω²dt² = " + fixed(1 + wdt * wdt, 4) +
+               " per contact step) and is unstable at any dt: use velocity-verlet";
+    if (wdt > limit)
+        return "dt·ω = " + fixed(wdt, 2) + " > " + fixed(limit, 2) + ": " + name + " is unstable; use |dt| < " +
+               fixed(limit / omega, 8) + " (about " + fixed(std::acos(-1.0) / wdt, 1) + " steps per contact now)";
+    return "dt·ω = " + fixed(wdt, 3) + " is inside the stability limit " + fixed(limit, 2) +
+           "; look for deeply overlapping disks (spawning, random placement with large k) or a fast obstacle, "
+           "or reduce dt";
+}
+
+void MdModel::checkHealth(bool energyCheck) {
+    if (failure_) return;
+    if (escaped_) {
+        fail("a disk moved farther than the box in one step or became NaN", stabilityHint());
+        return;
+    }
+    if (!energyCheck) return;
+    const double e = totalEnergy();
+    if (!std::isfinite(e)) {
+        fail("the total energy is not finite", stabilityHint());
+        return;
+    }
+    const double bound = params_.blowupEnergyFactor * std::max(referenceEnergy_, std::abs(energyBaseline_)) +
+                         (params_.wallMode == "thermal" ? 4.0 * params_.wallKT * state_.size() : 0.0);
+    if (e > bound && e > 0)
+        fail("the total energy grew from " + fixed(referenceEnergy_, 6) + " to " + fixed(e, 6) + " (more than " +
+                 fixed(params_.blowupEnergyFactor, 0) + "×)",
+             stabilityHint());
+}
+
+} // namespace pl

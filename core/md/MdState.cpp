@@ -1,0 +1,19 @@
+// MdState storage management.
+#include "MdState.h"
+
+namespace pl {
+
+void MdState::resize(std::size_t n) {
+    for (auto* v : {&x, &y, &vx, &vy, &ax, &ay, &potential, &virial, &wallImpulse}) v->resize(n, 0.0);
+    species.resize(n, 0);
+    id.resize(n, 0);
+    contactsBegun.resize(n, 0);
+}
+
+void MdState::append(double px, double py, double pvx, double pvy, std::uint8_t s, std::uint32_t pid) {
+    const std::size_t i = size();
+    resize(i + 1);
+    x[i] = px, y[i] = py, vx[i] = pvx, vy[i] = pvy, species[i] = s, id[i] = pid;
+}
+
+} // namespace pl

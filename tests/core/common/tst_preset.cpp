@@ -1,0 +1,198 @@
+// Presets: every built-in loads and round-trips; each kind of bad input is refused with its own message
+// and nothing is half-applied.
+#include "catalog/ModelCatalog.h"
+#include "common/AtomicFile.h"
+#include "md/MdModel.h"
+
+#include <QTemporaryDir>
+#include <QtTest>
+#include <filesystem>
+
+using namespace pl;
+
+namespace {
+
+std::string gasPreset(const std::string& params, const std::string& extra = "") {
+    return R"({"schema": 1, "model": "gas", "name": "t", "seed": 3, "params": {)" + params + "}" + extra + "}";
+}
+
+// The PresetError message of parsing and instantiating text; empty when it was accepted.
+QString errorOf(const std::string& text, std::string* key = nullptr) {
+    try {
+        instantiate(parsePreset(text, specsForModel, "test.json"));
+    } catch (const PresetError& e) {
+        if (key) *key = e.key();
+        return QString::fromStdString(e.what());
+    }
+    return {};
+}
+
+} // namespace
+
+class TestPreset : public QObject {
+    Q_OBJECT
+private slots:
+    void builtinsExistAndInstantiate() {
+        QStringList names;
+        for (const auto& p : builtinPresets()) {
+            names << QString::fromStdString(p.name);
+            QVERIFY2(!p.preset.description.empty(), p.name.c_str());
+            auto model = instantiate(p.preset);
+            QVERIFY(model->particleCount() > 0);
+        }
+        for (const char* required : {"gas-seed", "gas-classroom", "gas-mixture"}) QVERIFY(names.contains(required));
+    }
+
+    void seedPresetIsTheSeed() {
+        const Preset p = loadPreset("gas-seed");
+        auto model = instantiate(p);
+        const auto& md = static_cast<const MdModel&>(*model).parameters();
+        QCOMPARE(md.totalCount(), 4096LL);
+        QCOMPARE(md.a.diameter, 0.01);
+        QCOMPARE(md.stiffness, 1000.0);
+        QCOMPARE(md.dt, 1e-4);
+        QCOMPARE(md.left(), -1.0);
+        QCOMPARE(md.right(), 1.0);
+        QCOMPARE(md.integrator, std::string("velocity-verlet"));
+        const auto& s = static_cast<const MdModel&>(*model).state();
+        for (std::size_t i = 0; i < s.size(); ++i) QVERIFY(std::abs(std::hypot(s.vx[i], s.vy[i]) - 1.0) < 1e-12);
+    }
+
+    void roundTripThroughFile() {
+        QTemporaryDir dir;
+        for (const auto& builtin : builtinPresets()) {
+            Preset p = builtin.preset;
+            p.obstacles.push_back({Obstacle::Shape::Disc, 0.1, -0.2, 0.15});
+            p.obstacles.push_back({Obstacle::Shape::Box, -0.3, 0.4, 0.1, 0.2, 0.05});
+            const auto* specs = specsForModel(p.model);
+            const std::string path = dir.filePath(QString::fromStdString(builtin.name + ".json")).toStdString();
+            writePresetFile(path, p, *specs);
+            const Preset back = readPresetFile(path, specsForModel);
+            QCOMPARE(back.model, p.model);
+            QCOMPARE(back.seed, p.seed);
+            QCOMPARE(back.description, p.description);
+            QCOMPARE(back.obstacles.size(), p.obstacles.size());
+            QCOMPARE(back.obstacles[1].halfHeight, 0.05);
+            // Every parameter written, equal to what the model runs with.
+            auto a = instantiate(p), b = instantiate(back);
+            QVERIFY(a->params() == b->params());
+            QCOMPARE(back.params.size(), specs->size());
+            // A second serialisation is byte-identical: the format is stable.
+            QCOMPARE(serializePreset(back, *specs), serializePreset(readPresetFile(path, specsForModel), *specs));
+        }
+        // Atomic write leaves no temporary file behind.
+        QCOMPARE(QDir(dir.path()).entryList(QDir::Files).size(), static_cast<qsizetype>(builtinPresets().size()));
+    }
+
+    void modelToPresetRoundTrip() {
+        MdModel model;
+        model.reset(loadPreset("gas-mixture"));
+        model.setParams({{"gravity", 0.5}});
+        const Preset p = model.toPreset();
+        MdModel copy;
+        copy.reset(parsePreset(serializePreset(p, MdParams::describe()), specsForModel));
+        QVERIFY(copy.params() == model.params());
+    }
+
+    void invalidJsonNamesLine() {
+        const QString m = errorOf("{\"schema\": 1,\n \"model\": }");
+        QVERIFY2(m.contains("not valid JSON") && m.contains("line 2"), qPrintable(m));
+    }
+
+    void unsupportedSchema() {
+        const QString m = errorOf(R"({"schema": 2, "model": "gas"})");
+        QVERIFY2(m.contains("schema 2 is not supported"), qPrintable(m));
+    }
+
+    void unknownModel() { QVERIFY(errorOf(R"({"schema": 1, "model": "plasma"})").contains("unknown model")); }
+
+    void unknownKeys() {
+        std::string key;
+        QVERIFY(errorOf(gasPreset(R"("stifness": 10)"), &key).contains("unknown parameter"));
+        QCOMPARE(key, std::string("params.stifness"));
+        QVERIFY(errorOf(gasPreset("", R"(, "colour": 1)"), &key).contains("unknown key 'colour'"));
+    }
+
+    void wrongType() {
+        std::string key;
+        const QString m = errorOf(gasPreset(R"("dt": "fast")"), &key);
+        QVERIFY2(m.contains("must be a number") && m.contains("[-1, 1]"), qPrintable(m));
+        QCOMPARE(key, std::string("params.dt"));
+        QVERIFY(errorOf(gasPreset(R"("piston_enabled": 1)")).contains("true or false"));
+        QVERIFY(errorOf(gasPreset(R"("count_a": 10.5)")).contains("integer"));
+    }
+
+    void outOfRange() {
+        std::string key;
+        const QString m = errorOf(gasPreset(R"("stiffness": -5)"), &key);
+        QVERIFY2(m.contains("out of range") && m.contains("[1e-06, 1e+12] M/T²"), qPrintable(m));
+        QCOMPARE(key, std::string("params.stiffness"));
+        QVERIFY(errorOf(gasPreset(R"("dt": 0)")).contains("must not be 0"));
+        QVERIFY(errorOf(gasPreset(R"("integrator": "leapfrog")")).contains("velocity-verlet"));
+    }
+
+    void nonFiniteNumbers() {
+        QVERIFY(errorOf(gasPreset(R"("dt": 1e999)")).contains("number overflow"));
+        QVERIFY(errorOf(gasPreset(R"("dt": "NaN")")).contains("must be a number"));
+    }
+
+    void tooManyParticles() {
+        std::string key;
+        QVERIFY(errorOf(gasPreset(R"("count_a": 5000, "max_particles": 4000)"), &key).contains("exceeds max_particles"));
+        QCOMPARE(key, std::string("params.count_a"));
+        const QString fit = errorOf(gasPreset(R"("count_a": 40000, "diameter_a": 0.02)"), &key);
+        QVERIFY2(fit.contains("% fits"), qPrintable(fit));
+        // The memory rule, with a budget small enough to test on any machine.
+        MdParams p;
+        p.a.count = 100000;
+        p.boxWidth = p.boxHeight = 10; // room for them: only memory is short
+        QVERIFY_THROWS_EXCEPTION(ParamError, p.validate(1e6));
+        try {
+            p.validate(1e6);
+        } catch (const ParamError& e) {
+            QVERIFY(std::string(e.what()).find("at most 4166 disks") != std::string::npos);
+        }
+        p.validate(1e12); // the same gas fits a larger budget
+    }
+
+    void badObstacles() {
+        std::string key;
+        QVERIFY(errorOf(gasPreset("", R"(, "obstacles": [{"shape": "disc", "x": 0, "y": 0, "radius": -1}])"), &key)
+                    .contains("radius"));
+        QCOMPARE(key, std::string("obstacles[0].radius"));
+        QVERIFY(errorOf(gasPreset("", R"(, "obstacles": [{"shape": "star", "x": 0, "y": 0}])")).contains("\"star\""));
+        QVERIFY(errorOf(gasPreset("", R"(, "obstacles": [{"shape": "disc", "x": 9, "y": 0, "radius": 0.1}])"))
+                    .contains("outside the box"));
+    }
+
+    void missingFileNamesPath() {
+        try {
+            loadPreset("/nonexistent/dir/p.json");
+            QFAIL("loaded a missing file");
+        } catch (const PresetError& e) {
+            QVERIFY(std::string(e.what()).find("/nonexistent/dir/p.json") != std::string::npos);
+        }
+        QVERIFY_THROWS_EXCEPTION(FileError, writeFileAtomically("/nonexistent/dir/p.json", "{}"));
+    }
+
+    void nothingHalfApplied() {
+        MdModel model;
+        model.reset(loadPreset("gas-classroom"));
+        for (int i = 0; i < 10; ++i) model.step();
+        const auto before = model.params();
+        const auto x0 = model.state().x;
+        // One bad value among good ones: nothing changes.
+        QVERIFY_THROWS_EXCEPTION(ParamError, model.setParams({{"dt", 2e-4}, {"stiffness", -5.0}}));
+        QVERIFY(model.params() == before);
+        // A preset that fails cross-field validation leaves the running experiment alone.
+        Preset bad = loadPreset("gas-classroom");
+        bad.params["count_a"] = 1e6;
+        QVERIFY_THROWS_EXCEPTION(PresetError, model.reset(bad));
+        QVERIFY(model.params() == before);
+        QCOMPARE(model.stepCount(), 10LL);
+        QVERIFY(model.state().x == x0);
+    }
+};
+
+QTEST_APPLESS_MAIN(TestPreset)
+#include "tst_preset.moc"

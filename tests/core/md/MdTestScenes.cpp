@@ -1,0 +1,37 @@
+// Scene builders and measurements for the MD tests.
+#include "MdTestScenes.h"
+
+#include <cmath>
+
+namespace pl::test {
+
+MdModel makeGas(const ParamValues& values, std::uint64_t seed, std::vector<Obstacle> obstacles) {
+    Preset preset;
+    preset.model = "gas";
+    preset.seed = seed;
+    preset.params = values;
+    preset.obstacles = std::move(obstacles);
+    MdModel model;
+    model.reset(preset);
+    return model;
+}
+
+std::pair<double, double> totalMomentum(const MdModel& model) {
+    const auto& s = model.state();
+    const auto& p = model.parameters();
+    double px = 0, py = 0;
+    for (std::size_t i = 0; i < s.size(); ++i) {
+        const double m = s.species[i] == 0 ? p.a.mass : p.b.mass;
+        px += m * s.vx[i];
+        py += m * s.vy[i];
+    }
+    return {px, py};
+}
+
+double rmsDistance(const MdState& a, const MdState& b) {
+    double sum = 0;
+    for (std::size_t i = 0; i < a.size(); ++i) sum += std::pow(a.x[i] - b.x[i], 2) + std::pow(a.y[i] - b.y[i], 2);
+    return std::sqrt(sum / static_cast<double>(a.size()));
+}
+
+} // namespace pl::test
