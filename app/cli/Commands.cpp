@@ -70,7 +70,8 @@ std::string histogramsCsv(const Model& model) {
         for (std::size_t b = 0; b < h.counts.bins(); ++b) {
             const double lo = h.counts.lo() + static_cast<double>(b) * h.counts.binWidth();
             out << h.name << ',' << lo << ',' << lo + h.counts.binWidth() << ',' << h.counts.count(b) << ','
-                << h.counts.density(b) << ',' << (b < h.theory.size() ? h.theory[b] : 0.0) << '\n';
+                << h.counts.density(b) << ',' << (h.theoryDensity ? h.theoryDensity(h.counts.binCentre(b)) : 0.0)
+                << '\n';
         }
     }
     return out.str();

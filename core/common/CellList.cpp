@@ -1,5 +1,6 @@
 // Counting-sort construction of the cell list.
 #include "CellList.h"
+#include "Parallel.h"
 
 #include <algorithm>
 #include <cmath>
@@ -43,7 +44,7 @@ void CellList::build(const double* x, const double* y, std::size_t count) {
     cellOfParticle_.resize(count);
     order_.resize(count);
     const auto n = static_cast<long long>(count);
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if(n >= kParallelMinParticles)
     for (long long i = 0; i < n; ++i) cellOfParticle_[i] = static_cast<std::uint32_t>(cellOf(x[i], y[i]));
 
     std::fill(start_.begin(), start_.end(), 0u);

@@ -6,6 +6,7 @@
 #include "Preset.h"
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <ostream>
 #include <string>
@@ -23,9 +24,10 @@ struct ModelFailure {
 };
 
 struct NamedHistogram {
-    std::string name;   // e.g. "speed_a"
-    Histogram counts;   // measured
-    std::vector<double> theory; // theoretical density per bin centre (empty when none applies)
+    std::string name;    // e.g. "speed_a"
+    std::string summary; // one line for a plot title, e.g. "kT = 0.501, KS distance 0.012"
+    Histogram counts;    // measured
+    std::function<double(double)> theoryDensity; // the density theory predicts (empty when none applies)
 };
 
 class Model {

@@ -1,5 +1,6 @@
 // Walls, piston and obstacles: mirror reflection of disk centres, thermal walls, wall impulses.
 #include "MdKernels.h"
+#include "common/Parallel.h"
 #include "MdModel.h"
 #include "common/Philox.h"
 
@@ -114,7 +115,7 @@ void MdModel::applyBoundaries(double h) {
     const auto count = static_cast<long long>(s.size());
     bool escaped = false;
 
-#pragma omp parallel for schedule(static) reduction(|| : escaped)
+#pragma omp parallel for schedule(static) reduction(|| : escaped) if(count >= kParallelMinParticles)
     for (long long i = 0; i < count; ++i) {
         double& x = s.x[i];
         double& y = s.y[i];

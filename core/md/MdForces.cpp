@@ -1,5 +1,6 @@
 // Force passes: the cell-list gather (default) and the seed's all-pairs loop, which agree to round-off.
 #include "MdKernels.h"
+#include "common/Parallel.h"
 #include "MdModel.h"
 
 #include <algorithm>
@@ -36,7 +37,7 @@ void MdModel::computeForcesCellList(bool countContacts) {
     sortedY_.resize(n);
     const auto count = static_cast<long long>(n);
     // Positions copied into cell order, so each neighbour row is one contiguous run of memory.
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if(count >= kParallelMinParticles)
     for (long long k = 0; k < count; ++k) {
         sortedX_[k] = s.x[order[k]];
         sortedY_[k] = s.y[order[k]];
@@ -47,7 +48,7 @@ void MdModel::computeForcesCellList(bool countContacts) {
     const int nx = cells_.cellsX(), ny = cells_.cellsY();
     const std::uint8_t* species = s.species.data();
 
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if(count >= kParallelMinParticles)
     for (long long k = 0; k < count; ++k) {
         const std::uint32_t i = order[k];
         const int cx = static_cast<int>(cellOf[i] % static_cast<std::uint32_t>(nx));
@@ -90,7 +91,7 @@ void MdModel::computeForcesAllPairs(bool countContacts) {
     const SpeciesTable table = speciesTable(params_);
     const double stiffness = params_.stiffness;
     const double gravity = params_.gravity;
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if(count >= kParallelMinParticles)
     for (long long i = 0; i < count; ++i) {
         const double xi = s.x[i], yi = s.y[i];
         const double di = table.diameter[s.species[i]];

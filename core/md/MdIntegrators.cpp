@@ -1,6 +1,7 @@
 // The five time-stepping schemes, built from kick (v += h a) and drift (x += h v, then boundaries).
 // Each ends with forces evaluated at the new positions, so the next step starts from cached forces.
 #include "MdModel.h"
+#include "common/Parallel.h"
 
 #include <cmath>
 
@@ -17,7 +18,7 @@ void MdModel::kick(double h) {
     double* vy = state_.vy.data();
     const double* ax = state_.ax.data();
     const double* ay = state_.ay.data();
-#pragma omp parallel for simd schedule(static)
+#pragma omp parallel for simd schedule(static) if(n >= kParallelMinParticles)
     for (long long i = 0; i < n; ++i) {
         vx[i] += h * ax[i];
         vy[i] += h * ay[i];
@@ -30,7 +31,7 @@ void MdModel::drift(double h) {
     double* y = state_.y.data();
     const double* vx = state_.vx.data();
     const double* vy = state_.vy.data();
-#pragma omp parallel for simd schedule(static)
+#pragma omp parallel for simd schedule(static) if(n >= kParallelMinParticles)
     for (long long i = 0; i < n; ++i) {
         x[i] += h * vx[i];
         y[i] += h * vy[i];
@@ -83,7 +84,7 @@ void MdModel::stepRungeKutta4(double h) {
     auto& s = state_;
     const auto count = static_cast<long long>(n);
     // Stage k1 from the cached a(x_n); x0, v0 saved in stage*.
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if(count >= kParallelMinParticles)
     for (long long i = 0; i < count; ++i) {
         stageX_[i] = s.x[i], stageY_[i] = s.y[i], stageVX_[i] = s.vx[i], stageVY_[i] = s.vy[i];
         sumVX_[i] = s.vx[i], sumVY_[i] = s.vy[i], sumAX_[i] = s.ax[i], sumAY_[i] = s.ay[i];
@@ -93,7 +94,7 @@ void MdModel::stepRungeKutta4(double h) {
     const double w[3] = {2.0, 2.0, 1.0};
     for (int stage = 0; stage < 3; ++stage) {
         const double ch = c[stage] * h;
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if(count >= kParallelMinParticles)
         for (long long i = 0; i < count; ++i) {
             const double vxPrev = s.vx[i], vyPrev = s.vy[i];
             s.x[i] = stageX_[i] + ch * vxPrev;
@@ -102,13 +103,13 @@ void MdModel::stepRungeKutta4(double h) {
             s.vy[i] = stageVY_[i] + ch * s.ay[i];
         }
         computeForces(false);
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if(count >= kParallelMinParticles)
         for (long long i = 0; i < count; ++i) {
             sumVX_[i] += w[stage] * s.vx[i], sumVY_[i] += w[stage] * s.vy[i];
             sumAX_[i] += w[stage] * s.ax[i], sumAY_[i] += w[stage] * s.ay[i];
         }
     }
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if(count >= kParallelMinParticles)
     for (long long i = 0; i < count; ++i) {
         s.x[i] = stageX_[i] + h / 6.0 * sumVX_[i];
         s.y[i] = stageY_[i] + h / 6.0 * sumVY_[i];

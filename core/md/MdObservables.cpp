@@ -3,8 +3,10 @@
 #include "MdModel.h"
 #include "common/Statistics.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
+#include <sstream>
 
 namespace pl {
 
@@ -84,20 +86,27 @@ MdObservables MdModel::observe() {
 
 NamedHistogram MdModel::speedHistogram(int species) const {
     const double m = params_.species(species).mass;
+    std::vector<double> speeds;
     double kinetic = 0.0;
-    long long count = 0;
     for (std::size_t i = 0; i < state_.size(); ++i) {
         if (state_.species[i] != species) continue;
-        kinetic += 0.5 * m * (state_.vx[i] * state_.vx[i] + state_.vy[i] * state_.vy[i]);
-        ++count;
+        const double v2 = state_.vx[i] * state_.vx[i] + state_.vy[i] * state_.vy[i];
+        kinetic += 0.5 * m * v2;
+        speeds.push_back(std::sqrt(v2));
     }
-    const double kT = count > 0 ? kinetic / count : 0.0;
+    const double kT = speeds.empty() ? 0.0 : kinetic / static_cast<double>(speeds.size());
     const double vmax = kT > 0 ? kHistogramSigmas * std::sqrt(kT / m) : 1.0;
-    NamedHistogram h{species == 0 ? "speed_a" : "speed_b",
-                     Histogram(0.0, vmax, static_cast<std::size_t>(params_.histogramBins)), {}};
-    for (std::size_t i = 0; i < state_.size(); ++i)
-        if (state_.species[i] == species) h.counts.add(std::hypot(state_.vx[i], state_.vy[i]));
-    for (std::size_t b = 0; b < h.counts.bins(); ++b) h.theory.push_back(rayleighPdf(h.counts.binCentre(b), kT, m));
+    NamedHistogram h;
+    h.name = species == 0 ? "speed_a" : "speed_b";
+    h.counts = Histogram(0.0, vmax, static_cast<std::size_t>(params_.histogramBins));
+    for (double v : speeds) h.counts.add(v);
+    h.theoryDensity = [kT, m](double v) { return rayleighPdf(v, kT, m); };
+    const double ks = ksDistance(speeds, [kT, m](double v) { return rayleighCdf(v, kT, m); });
+    std::ostringstream summary;
+    summary.precision(3);
+    const bool mixture = std::count(state_.species.begin(), state_.species.end(), 1 - species) > 0;
+    summary << (mixture ? (species == 0 ? "A: " : "B: ") : "") << "kT = " << kT << ", KS distance " << ks;
+    h.summary = summary.str();
     return h;
 }
 

@@ -2,6 +2,7 @@
 // the random draws of thermal walls and spawning.
 #include "MdTestScenes.h"
 #include "catalog/ModelCatalog.h"
+#include "common/Parallel.h"
 
 #include <QtTest>
 #include <omp.h>
@@ -38,13 +39,14 @@ private slots:
         QFETCH(QString, preset);
         QFETCH(QString, integrator);
         Preset p = loadPreset(preset.toStdString());
+        p.params["count_a"] = 4000.0; // above the size at which loops go parallel
         p.params["integrator"] = integrator.toStdString();
         p.params["wall_mode"] = std::string("thermal");
         p.params["wall_kT"] = 0.8;
         p.params["gravity"] = 0.3;
         const MdState one = runWithThreads(1, p, 200);
         const MdState two = runWithThreads(2, p, 200);
-        QVERIFY(one.size() > 0);
+        QVERIFY(static_cast<long long>(one.size()) >= kParallelMinParticles);
         QVERIFY(one.x == two.x);
         QVERIFY(one.y == two.y);
         QVERIFY(one.vx == two.vx);

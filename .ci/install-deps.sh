@@ -1,0 +1,35 @@
+#!/usr/bin/env bash
+# Installs what ParticleLab needs on Debian 12 (bookworm): the one package list both quick-start
+# commands use. Installs only what is missing; needs root or sudo when something is.
+set -euo pipefail
+
+packages=(
+  # toolchain
+  cmake g++ make pkg-config ca-certificates
+  # Qt 6 widgets, OpenGL widgets, SVG, test; QCustomPlot's Qt 6 build
+  qt6-base-dev libqt6opengl6-dev qt6-svg-dev libqcustomplot-dev
+  # numerics, JSON, command line
+  libeigen3-dev nlohmann-json3-dev libcli11-dev
+  # OpenGL loading and headless contexts; Mesa's software renderer
+  libepoxy-dev libegl-dev libgl1-mesa-dri libegl-mesa0 libglx-mesa0
+  # an X server for the GUI tests
+  xvfb xauth
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+[ ${#missing[@]} -eq 0 ] && exit 0
+
+if [ "$(id -u)" -eq 0 ]; then
+  as_root=()
+elif command -v sudo >/dev/null 2>&1; then
+  as_root=(sudo)
+else
+  echo "install-deps: missing packages (${missing[*]}) and no root or sudo to install them" >&2
+  exit 1
+fi
+echo "install-deps: installing ${missing[*]}" >&2
+"${as_root[@]}" apt-get update -q
+DEBIAN_FRONTEND=noninteractive "${as_root[@]}" apt-get install -y -q --no-install-recommends "${missing[@]}"

@@ -1,0 +1,126 @@
+// particlelab-cli as a user runs it: list, run with every output file, bench, and each error path with
+// its exit code and message.
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QProcess>
+#include <QTemporaryDir>
+#include <QtTest>
+
+namespace {
+
+struct Result {
+    int exitCode;
+    QString out, err;
+};
+
+Result cli(const QStringList& args) {
+    QProcess p;
+    p.start(PARTICLELAB_CLI, args);
+    p.waitForFinished(120000);
+    return {p.exitCode(), QString::fromUtf8(p.readAllStandardOutput()), QString::fromUtf8(p.readAllStandardError())};
+}
+
+QStringList readLines(const QString& path) {
+    QFile f(path);
+    if (!f.open(QIODevice::ReadOnly)) return {};
+    return QString::fromUtf8(f.readAll()).split('\n', Qt::SkipEmptyParts);
+}
+
+} // namespace
+
+class TestCli : public QObject {
+    Q_OBJECT
+private slots:
+    void listShowsBuiltins() {
+        const auto r = cli({"list"});
+        QCOMPARE(r.exitCode, 0);
+        for (const char* name : {"gas-seed", "gas-classroom", "gas-mixture"}) QVERIFY(r.out.contains(name));
+    }
+
+    void runWritesEveryFile() {
+        QTemporaryDir dir;
+        const QString series = dir.filePath("s.csv"), hist = dir.filePath("h.csv"), init = dir.filePath("i.csv"),
+                      fin = dir.filePath("f.csv");
+        const auto r = cli({"run", "gas-seed", "--steps", "200", "--every", "50", "--threads", "2", "--out", series,
+                            "--histogram", hist, "--dump-initial", init, "--dump-final", fin});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        const QStringList rows = readLines(series);
+        QCOMPARE(rows.size(), 1 + 5); // header, steps 0, 50, 100, 150, 200
+        const QStringList header = rows[0].split(',');
+        for (const char* column : {"step", "time", "kinetic", "potential", "total", "kT", "pressure_virial", "pressure_wall"})
+            QVERIFY2(header.contains(column), column);
+        QCOMPARE(rows.last().split(',')[0], QString("200"));
+        QCOMPARE(readLines(init).size(), 4097);
+        QCOMPARE(readLines(fin)[0], QString("id,species,x,y,vx,vy"));
+        QVERIFY(readLines(hist)[1].startsWith("speed_a,0,"));
+        // The initial dump is the seed's start: speed 1 everywhere.
+        const QStringList first = readLines(init)[1].split(',');
+        QVERIFY(std::abs(std::hypot(first[4].toDouble(), first[5].toDouble()) - 1.0) < 1e-12);
+    }
+
+    void setAndSeedChangeTheRun() {
+        QTemporaryDir dir;
+        const QString a = dir.filePath("a.csv"), b = dir.filePath("b.csv");
+        QCOMPARE(cli({"run", "gas-classroom", "--steps", "0", "--set", "count_a=100", "--seed", "5", "--dump-final", a}).exitCode, 0);
+        QCOMPARE(cli({"run", "gas-classroom", "--steps", "0", "--set", "count_a=100", "--seed", "6", "--set",
+                      "init_placement=random", "--dump-final", b}).exitCode, 0);
+        QCOMPARE(readLines(a).size(), 101);
+        QVERIFY(readLines(a)[1] != readLines(b)[1]);
+    }
+
+    void presetFileRuns() {
+        QTemporaryDir dir;
+        const QString path = dir.filePath("mine.json");
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write(R"({"schema": 1, "model": "gas", "params": {"count_a": 50, "diameter_a": 0.02}})");
+        f.close();
+        QCOMPARE(cli({"run", path, "--steps", "10", "--quiet"}).exitCode, 0);
+    }
+
+    void badInputsNameTheProblem_data() {
+        QTest::addColumn<QStringList>("args");
+        QTest::addColumn<int>("exitCode");
+        QTest::addColumn<QString>("message");
+        QTest::newRow("unknown preset") << QStringList{"run", "no-such-preset"} << 2 << "neither a built-in preset";
+        QTest::newRow("unknown key") << QStringList{"run", "gas-seed", "--set", "stifness=3"} << 2 << "unknown parameter 'stifness'";
+        QTest::newRow("out of range") << QStringList{"run", "gas-seed", "--set", "dt=5"} << 2 << "[-1, 1] except 0 T";
+        QTest::newRow("nan") << QStringList{"run", "gas-seed", "--set", "stiffness=nan"} << 2 << "must be finite";
+        QTest::newRow("wrong type") << QStringList{"run", "gas-seed", "--set", "count_a=many"} << 2 << "must be an integer";
+        QTest::newRow("not key=value") << QStringList{"run", "gas-seed", "--set", "dt"} << 2 << "key=value";
+        QTest::newRow("too many") << QStringList{"run", "gas-seed", "--set", "count_a=2000000"} << 2 << "exceeds max_particles";
+        QTest::newRow("unwritable") << QStringList{"run", "gas-seed", "--steps", "1", "--out", "/nonexistent/s.csv"} << 4 << "/nonexistent/s.csv";
+    }
+    void badInputsNameTheProblem() {
+        QFETCH(QStringList, args);
+        QFETCH(int, exitCode);
+        QFETCH(QString, message);
+        const auto r = cli(args);
+        QCOMPARE(r.exitCode, exitCode);
+        QVERIFY2(r.err.contains(message), qPrintable(r.err));
+    }
+
+    void blowUpExitsWithTheModelsMessage() {
+        QTemporaryDir dir;
+        const QString series = dir.filePath("s.csv");
+        const auto r = cli({"run", "gas-classroom", "--steps", "3000", "--set", "dt=0.0056", "--out", series});
+        QCOMPARE(r.exitCode, 3);
+        QVERIFY2(r.err.contains("dt·ω = 2.50 > 2.00"), qPrintable(r.err));
+        QVERIFY(readLines(series).size() > 1); // what was measured before the failure is kept
+    }
+
+    void benchPrintsOneJsonLine() {
+        const auto r = cli({"bench", "gas-classroom", "--steps", "50", "--repeats", "3", "--threads", "1"});
+        QCOMPARE(r.exitCode, 0);
+        const auto json = QJsonDocument::fromJson(r.out.toUtf8()).object();
+        QCOMPARE(json["particles"].toInt(), 2500);
+        QCOMPARE(json["steps"].toInt(), 50);
+        QCOMPARE(json["threads"].toInt(), 1);
+        QCOMPARE(json["backend"].toString(), QString("cpu"));
+        QVERIFY(json["p_steps_per_s"].toDouble() > 0);
+        QVERIFY(std::abs(json["p_steps_per_s"].toDouble() - 2500.0 * 50 / json["seconds"].toDouble()) < 1e-6 * json["p_steps_per_s"].toDouble());
+    }
+};
+
+QTEST_GUILESS_MAIN(TestCli)
+#include "tst_cli.moc"
