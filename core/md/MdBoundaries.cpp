@@ -1,6 +1,6 @@
 // Walls, piston and obstacles: mirror reflection of disk centres, thermal walls, wall impulses.
-#include "MdKernels.h"
-#include "common/Parallel.h"
+#include "MdBoundaries.h"
+
 #include "MdModel.h"
 #include "common/Philox.h"
 
@@ -100,58 +100,69 @@ void collideObstacle(const Obstacle& o, double radius, double h, double& x, doub
 
 } // namespace
 
-void MdModel::applyBoundaries(double h) {
-    MdState& s = state_;
-    const double left = params_.left(), right = params_.right();
-    const double bottom = params_.bottom(), top = params_.top();
-    const bool thermal = params_.wallMode == "thermal";
-    const bool thermalRight = thermal && !params_.pistonEnabled;
-    const double wallKT = params_.wallKT;
-    const double pistonU = params_.pistonEnabled ? pistonVelocity_ : 0.0;
-    const double mass[2] = {params_.a.mass, params_.b.mass};
-    const double radius[2] = {0.5 * params_.a.diameter, 0.5 * params_.b.diameter};
-    const double timeSign = h >= 0 ? 1.0 : -1.0; // a crossing in backward time undoes an impulse
-    const std::uint64_t drawIndex = static_cast<std::uint64_t>(step_) * 8 + driftIndex_;
-    const auto count = static_cast<long long>(s.size());
-    bool escaped = false;
+namespace md {
 
-#pragma omp parallel for schedule(static) reduction(|| : escaped) if(count >= kParallelMinParticles)
-    for (long long i = 0; i < count; ++i) {
-        double& x = s.x[i];
-        double& y = s.y[i];
-        double& vx = s.vx[i];
-        double& vy = s.vy[i];
-        const double m = mass[s.species[i]];
-        const double vxIn = vx, vyIn = vy;
-        const double hitLeft = md::reflectPlane(x, vx, left, -1.0, 0.0, timeSign);
-        const double hitRight = md::reflectPlane(x, vx, right, 1.0, pistonU, timeSign);
-        const double hitBottom = md::reflectPlane(y, vy, bottom, -1.0, 0.0, timeSign);
-        const double hitTop = md::reflectPlane(y, vy, top, 1.0, 0.0, timeSign);
-        if (thermal && (hitLeft != 0 || (thermalRight && hitRight != 0) || hitBottom != 0 || hitTop != 0)) {
-            const auto v = thermalWallVelocity(wallKT, m, randomWords(seed_, RngPurpose::ThermalWall, s.id[i], drawIndex));
-            if (hitLeft != 0 || hitRight != 0) {
-                vx = (hitLeft != 0 ? 1.0 : -1.0) * v.normal;
-                vy = v.tangential;
-            } else {
-                vy = (hitBottom != 0 ? 1.0 : -1.0) * v.normal;
-                vx = v.tangential;
-            }
+bool Boundaries::reflectOffWalls(double& x, double& y, double& vx, double& vy, int species, std::uint32_t id,
+                                 double& impulse) const {
+    const double m = mass[species];
+    const double vxIn = vx, vyIn = vy;
+    const double hitLeft = reflectPlane(x, vx, left, -1.0, 0.0, timeSign);
+    const double hitRight = reflectPlane(x, vx, right, 1.0, pistonVelocity, timeSign);
+    const double hitBottom = reflectPlane(y, vy, bottom, -1.0, 0.0, timeSign);
+    const double hitTop = reflectPlane(y, vy, top, 1.0, 0.0, timeSign);
+    if (thermal && (hitLeft != 0 || (thermalRight && hitRight != 0) || hitBottom != 0 || hitTop != 0)) {
+        const auto v = thermalWallVelocity(wallKT, m, randomWords(seed, RngPurpose::ThermalWall, id, drawIndex));
+        if (hitLeft != 0 || hitRight != 0) {
+            vx = (hitLeft != 0 ? 1.0 : -1.0) * v.normal;
+            vy = v.tangential;
+        } else {
+            vy = (hitBottom != 0 ? 1.0 : -1.0) * v.normal;
+            vx = v.tangential;
         }
-        // Normal momentum handed to the walls: m |Δv_n| for every wall that was crossed.
-        double impulse = 0.0;
-        if (hitLeft != 0 || hitRight != 0) impulse += std::abs(vx - vxIn);
-        if (hitBottom != 0 || hitTop != 0) impulse += std::abs(vy - vyIn);
-        s.wallImpulse[i] += timeSign * m * impulse;
-
-        // A disk still outside after one mirror moved farther than the box in one step: a blow-up.
-        if (!(x >= left && x <= right && y >= bottom && y <= top)) escaped = true;
-
-        for (const auto& o : obstacles_) collideObstacle(o, radius[s.species[i]], h, x, y, vx, vy);
-        // An obstacle touching a wall may push a disk against it: keep the centre in the box.
+    }
+    // Normal momentum handed to the walls: m |Δv_n| for every wall crossed, signed by the time direction.
+    double given = 0.0;
+    if (hitLeft != 0 || hitRight != 0) given += std::abs(vx - vxIn);
+    if (hitBottom != 0 || hitTop != 0) given += std::abs(vy - vyIn);
+    impulse += timeSign * m * given;
+    // Still outside after one mirror: the disk moved farther than the box in one step (or is NaN).
+    const bool ok = x >= left && x <= right && y >= bottom && y <= top;
+    if (!ok) {
         x = std::isfinite(x) ? std::clamp(x, left, right) : 0.0;
         y = std::isfinite(y) ? std::clamp(y, bottom, top) : 0.0;
     }
-    escaped_ = escaped_ || escaped;
+    return ok;
+}
+
+void Boundaries::collideWithObstacles(double& x, double& y, double& vx, double& vy, int species) const {
+    for (const auto& o : *obstacles) collideObstacle(o, radius[species], h, x, y, vx, vy);
+    // An obstacle touching a wall may push a disk against it: keep the centre in the box.
+    x = std::clamp(x, left, right);
+    y = std::clamp(y, bottom, top);
+}
+
+} // namespace md
+
+md::Boundaries MdModel::boundaries(double h) const {
+    md::Boundaries b;
+    b.left = params_.left();
+    b.right = params_.right();
+    b.bottom = params_.bottom();
+    b.top = params_.top();
+    b.pistonVelocity = params_.pistonEnabled ? pistonVelocity_ : 0.0;
+    b.h = h;
+    b.timeSign = h >= 0 ? 1.0 : -1.0;
+    b.thermal = params_.wallMode == "thermal";
+    b.thermalRight = b.thermal && !params_.pistonEnabled;
+    b.wallKT = params_.wallKT;
+    b.mass[0] = params_.a.mass;
+    b.mass[1] = params_.b.mass;
+    b.radius[0] = 0.5 * params_.a.diameter;
+    b.radius[1] = 0.5 * params_.b.diameter;
+    b.seed = seed_;
+    b.drawIndex = static_cast<std::uint64_t>(step_) * 8 + driftIndex_;
+    b.obstacles = &obstacles_;
+    return b;
 }
 
 } // namespace pl

@@ -1,13 +1,18 @@
-// Force passes: the cell-list gather (default) and the seed's all-pairs loop, which agree to round-off.
+// Force passes: Verlet neighbour lists built from the cell list (default) and the seed's all-pairs loop;
+// both give the same forces to round-off. Gather form: iteration i writes only particle i.
 #include "MdKernels.h"
-#include "common/Parallel.h"
 #include "MdModel.h"
+#include "common/Parallel.h"
 
 #include <algorithm>
 
 namespace pl {
 
 namespace {
+
+// Neighbour-list skin as a fraction of the largest diameter. A dilute gas has so few neighbours that a
+// wide skin costs little in the force loop and saves rebuilds (measured: BENCHMARKS.md).
+constexpr double kSkinOverDiameter = 1.0;
 
 struct SpeciesTable {
     double diameter[2];
@@ -20,72 +25,97 @@ SpeciesTable speciesTable(const MdParams& p) {
 
 } // namespace
 
-void MdModel::computeForces(bool countContacts) {
-    if (params_.forceMethod == "all-pairs") computeForcesAllPairs(countContacts);
-    else computeForcesCellList(countContacts);
+void MdModel::computeForces(Contacts contacts, double kickAfter, bool energies) {
+    if (params_.forceMethod == "all-pairs") {
+        computeForcesAllPairs(contacts, kickAfter);
+        energies = true; // the comparison path always fills them
+    } else {
+        const auto n = state_.size();
+        const bool rebuild = maxDisplacement2_ >= 0.0 ? neighbours_.needsRebuild(maxDisplacement2_)
+                                                      : neighbours_.needsRebuild(state_.x.data(), state_.y.data(), n);
+        if (rebuild) {
+            const double d = params_.maxDiameter();
+            neighbours_.build(state_.x.data(), state_.y.data(), n, d, kSkinOverDiameter * d, params_.left(),
+                              params_.bottom(), 0.5 * params_.boxWidth, params_.top());
+        }
+        computeForcesNeighbourList(contacts, kickAfter, energies);
+    }
+    maxDisplacement2_ = -1.0;
     forcesValid_ = true;
+    energiesValid_ = energies;
 }
 
-void MdModel::computeForcesCellList(bool countContacts) {
+void MdModel::refreshEnergies() {
+    ensureForces();
+    // Forces at unchanged positions come out bit-identical, so recomputing them here is harmless.
+    if (!energiesValid_) computeForces(Contacts::Ignore, 0.0, true);
+}
+
+void MdModel::computeForcesNeighbourList(Contacts contacts, double kickAfter, bool energies) {
     MdState& s = state_;
-    const std::size_t n = s.size();
-    cells_.build(s.x.data(), s.y.data(), n);
-    const auto& order = cells_.order();
-    const auto& start = cells_.cellStart();
-    const auto& cellOf = cells_.cellOfParticle();
-    sortedX_.resize(n);
-    sortedY_.resize(n);
-    const auto count = static_cast<long long>(n);
-    // Positions copied into cell order, so each neighbour row is one contiguous run of memory.
-#pragma omp parallel for schedule(static) if(count >= kParallelMinParticles)
-    for (long long k = 0; k < count; ++k) {
-        sortedX_[k] = s.x[order[k]];
-        sortedY_[k] = s.y[order[k]];
-    }
+    const auto count = static_cast<long long>(s.size());
     const SpeciesTable table = speciesTable(params_);
     const double stiffness = params_.stiffness;
     const double gravity = params_.gravity;
-    const int nx = cells_.cellsX(), ny = cells_.cellsY();
+    const std::uint32_t* lists = neighbours_.entries();
+    const std::uint32_t* listSizes = neighbours_.counts();
+    std::uint8_t* touching = neighbours_.payload(); // in contact at the last counted evaluation
+    const std::size_t stride = neighbours_.stride();
+    // Raw pointers: the byte stores of the contact flags may alias anything, and would otherwise make
+    // the compiler reload every vector's data pointer after each of them.
+    const double* x = s.x.data();
+    const double* y = s.y.data();
+    double* vx = s.vx.data();
+    double* vy = s.vy.data();
+    double* ax = s.ax.data();
+    double* ay = s.ay.data();
+    double* potentialOut = s.potential.data();
+    double* virialOut = s.virial.data();
+    std::uint32_t* begunOut = s.contactsBegun.data();
     const std::uint8_t* species = s.species.data();
 
-#pragma omp parallel for schedule(static) if(count >= kParallelMinParticles)
-    for (long long k = 0; k < count; ++k) {
-        const std::uint32_t i = order[k];
-        const int cx = static_cast<int>(cellOf[i] % static_cast<std::uint32_t>(nx));
-        const int cy = static_cast<int>(cellOf[i] / static_cast<std::uint32_t>(nx));
-        const double xi = sortedX_[k], yi = sortedY_[k];
+    // firstprivate: each thread reads its own copy of the loop's constants instead of the master's stack.
+#pragma omp parallel for schedule(static) if(count >= kParallelMinParticles)                                         \
+    firstprivate(table, stiffness, gravity, lists, listSizes, touching, stride, x, y, vx, vy, ax, ay, potentialOut,    \
+                     virialOut, begunOut, species, contacts, kickAfter, energies)
+    for (long long i = 0; i < count; ++i) {
+        const double xi = x[i], yi = y[i];
         const double di = table.diameter[species[i]];
+        const std::uint32_t* list = lists + static_cast<std::size_t>(i) * stride;
+        std::uint8_t* wasTouching = touching + static_cast<std::size_t>(i) * stride;
+        const std::uint32_t size = listSizes[i];
         double fx = 0, fy = 0, potential = 0, virial = 0;
         std::uint32_t began = 0;
-        const int x0 = std::max(cx - 1, 0), x1 = std::min(cx + 1, nx - 1);
-        for (int row = std::max(cy - 1, 0); row <= std::min(cy + 1, ny - 1); ++row) {
-            const std::uint32_t first = start[row * nx + x0], last = start[row * nx + x1 + 1];
-            for (std::uint32_t kj = first; kj < last; ++kj) {
-                if (kj == static_cast<std::uint32_t>(k)) continue;
-                const std::uint32_t j = order[kj];
-                const double dij = md::contactDiameter(di, table.diameter[species[j]]);
-                md::PairResult pair;
-                if (!md::harmonicPair(xi - sortedX_[kj], yi - sortedY_[kj], dij, stiffness, pair)) continue;
-                fx += pair.fx;
-                fy += pair.fy;
-                potential += 0.5 * pair.potential; // each pair is visited from both ends
-                virial += 0.25 * pair.virial;
-                if (countContacts) {
-                    const double px = xPrev_[i] - xPrev_[j], py = yPrev_[i] - yPrev_[j];
-                    began += (px * px + py * py >= dij * dij) ? 1u : 0u;
-                }
+        for (std::uint32_t k = 0; k < size; ++k) {
+            const std::uint32_t j = list[k];
+            md::PairResult pair;
+            const bool inContact = md::harmonicPair(xi - x[j], yi - y[j], md::contactDiameter(di, table.diameter[species[j]]),
+                                                    stiffness, pair);
+            if (contacts != Contacts::Ignore) {
+                began += (contacts == Contacts::Count && inContact && !wasTouching[k]) ? 1u : 0u;
+                wasTouching[k] = inContact;
             }
+            if (!inContact) continue;
+            fx += pair.fx;
+            fy += pair.fy;
+            potential += 0.5 * pair.potential; // each pair is visited from both ends
+            virial += 0.25 * pair.virial;
         }
         const double invM = table.inverseMass[species[i]];
-        s.ax[i] = fx * invM;
-        s.ay[i] = fy * invM - gravity;
-        s.potential[i] = potential;
-        s.virial[i] = virial;
-        s.contactsBegun[i] += began;
+        const double axi = fx * invM, ayi = fy * invM - gravity;
+        ax[i] = axi;
+        ay[i] = ayi;
+        vx[i] += kickAfter * axi;
+        vy[i] += kickAfter * ayi;
+        if (energies) {
+            potentialOut[i] = potential;
+            virialOut[i] = virial;
+        }
+        if (began) begunOut[i] += began;
     }
 }
 
-void MdModel::computeForcesAllPairs(bool countContacts) {
+void MdModel::computeForcesAllPairs(Contacts contacts, double kickAfter) {
     MdState& s = state_;
     const auto count = static_cast<long long>(s.size());
     const SpeciesTable table = speciesTable(params_);
@@ -106,7 +136,7 @@ void MdModel::computeForcesAllPairs(bool countContacts) {
             fy += pair.fy;
             potential += 0.5 * pair.potential;
             virial += 0.25 * pair.virial;
-            if (countContacts) {
+            if (contacts == Contacts::Count) {
                 const double px = xPrev_[i] - xPrev_[j], py = yPrev_[i] - yPrev_[j];
                 began += (px * px + py * py >= dij * dij) ? 1u : 0u;
             }
@@ -114,6 +144,8 @@ void MdModel::computeForcesAllPairs(bool countContacts) {
         const double invM = table.inverseMass[s.species[i]];
         s.ax[i] = fx * invM;
         s.ay[i] = fy * invM - gravity;
+        s.vx[i] += kickAfter * s.ax[i];
+        s.vy[i] += kickAfter * s.ay[i];
         s.potential[i] = potential;
         s.virial[i] = virial;
         s.contactsBegun[i] += began;

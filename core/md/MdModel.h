@@ -1,9 +1,11 @@
 // The soft-disk gas: OpenMP CPU reference model. step() reads like the integrator's table of contents.
 #pragma once
 
+#include "MdBoundaries.h"
 #include "MdParams.h"
 #include "MdState.h"
 #include "common/CellList.h"
+#include "common/NeighbourList.h"
 #include "common/Model.h"
 #include "common/Obstacle.h"
 
@@ -71,7 +73,7 @@ public:
     const MdParams& parameters() const { return params_; }
     const MdState& state() const { return state_; }
     MdObservables observe(); // closes the wall-impulse and contact windows
-    double totalEnergy() const; // kinetic + pair + gravity energy of the current state, no side effects
+    double totalEnergy(); // kinetic + pair + gravity energy of the current state
     NamedHistogram speedHistogram(int species) const;
 
     const std::vector<Obstacle>& obstacles() const { return obstacles_; }
@@ -100,21 +102,26 @@ private:
     void stepRungeKutta4(double h);
     void stepForestRuth(double h);
 
-    // Stages
-    void kick(double h);                      // v += h a
-    void drift(double h);                     // x += h v, then walls and obstacles
-    void computeForces(bool countContacts);   // a, potential, virial at the current positions
-    void computeForcesCellList(bool countContacts);
-    void computeForcesAllPairs(bool countContacts);
-    void applyBoundaries(double h);           // reflections, thermal walls, impulses
+    // Stages. Each loop over particles does as much as it can in one pass (gather form throughout).
+    enum class Contacts { Ignore, Count, Initialise };
+    // v += kickBefore a; x += h v; walls and obstacles; v += kickAfter a; displacement since the list build.
+    void driftStage(double kickBefore, double h, double kickAfter);
+    void boundaryStage(double h); // walls and obstacles only (after an RK4 update)
+    // a at the current positions, then v += kickAfter a; with energies, also each disk's potential
+    // energy and virial (only observables need them, so the steps skip them).
+    void computeForces(Contacts contacts, double kickAfter = 0.0, bool energies = false);
+    void computeForcesNeighbourList(Contacts contacts, double kickAfter, bool energies);
+    void refreshEnergies();
+    void computeForcesAllPairs(Contacts contacts, double kickAfter);
+    md::Boundaries boundaries(double h) const;
     void ensureForces();
+    void sortBySpace(); // particles in cell order, so neighbours in space are neighbours in memory
 
     // State building (MdInitialState.cpp)
     void buildInitialState();
     void placeRandom(long long first, long long count, int species);
     void placeLattice();
     void assignVelocities();
-    void configureCells();
 
     // Health (MdStability.cpp)
     void checkHealth(bool energyCheck);
@@ -133,11 +140,14 @@ private:
     MdIntegrator integrator_ = MdIntegrator::VelocityVerlet;
 
     MdState state_;
-    std::vector<double> xPrev_, yPrev_;     // positions at the start of the step (contact detection)
-    std::vector<double> sortedX_, sortedY_; // positions in cell order for the neighbour loops
+    NeighbourList neighbours_;          // payload byte per pair: in contact at the last counted evaluation
+    double maxDisplacement2_ = -1.0;    // since the list build, from the last drift; −1 when unknown
+    CellList sortCells_;
+    std::int64_t lastSortStep_ = -1;
+    std::vector<double> xPrev_, yPrev_; // positions at the start of the step (all-pairs contact detection)
     std::vector<double> stageX_, stageY_, stageVX_, stageVY_, sumVX_, sumVY_, sumAX_, sumAY_; // RK4
-    CellList cells_;
     bool forcesValid_ = false;
+    bool energiesValid_ = false; // potential and virial belong to the current positions
     bool escaped_ = false;
     double pistonVelocity_ = 0.0;
 

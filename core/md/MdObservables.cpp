@@ -16,7 +16,7 @@ const double kNaN = std::numeric_limits<double>::quiet_NaN();
 } // namespace
 
 MdObservables MdModel::observe() {
-    ensureForces();
+    refreshEnergies();
     MdObservables o;
     o.step = step_;
     o.time = time_;

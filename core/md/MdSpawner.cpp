@@ -37,7 +37,7 @@ bool MdModel::overlapsTooMuch(double x, double y, double diameter) const {
 void MdModel::populationChanged() {
     params_.a.count = std::count(state_.species.begin(), state_.species.end(), 0);
     params_.b.count = static_cast<long long>(state_.size()) - params_.a.count;
-    configureCells();
+    neighbours_.invalidate();
     forcesValid_ = false;
     ensureForces(); // also resets the previous positions: a spawned disk begins no contact
     rebaseEnergy();
@@ -92,6 +92,7 @@ void MdModel::placeParticles(const std::vector<MdParticle>& particles) {
     for (const auto& p : particles)
         state_.append(p.x, p.y, p.vx, p.vy, static_cast<std::uint8_t>(p.species == 0 ? 0 : 1), nextId());
     step_ = 0;
+    lastSortStep_ = -1;
     time_ = lastSampleTime_ = 0.0;
     failure_.reset();
     escaped_ = false;

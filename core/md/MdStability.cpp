@@ -32,7 +32,8 @@ std::string fixed(double v, int digits) {
 
 } // namespace
 
-double MdModel::totalEnergy() const {
+double MdModel::totalEnergy() {
+    refreshEnergies();
     double kinetic = 0.0, potential = 0.0;
     const double mass[2] = {params_.a.mass, params_.b.mass};
     for (std::size_t i = 0; i < state_.size(); ++i) {

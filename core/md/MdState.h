@@ -23,6 +23,8 @@ struct MdState {
     std::size_t size() const { return x.size(); }
     void resize(std::size_t n);
     void append(double px, double py, double pvx, double pvy, std::uint8_t s, std::uint32_t pid);
+    // Reorders the particles: new particle n is old particle newToOld[n].
+    void permute(const std::vector<std::uint32_t>& newToOld);
     // Keeps the particles for which keep(i) is true, preserving order.
     template <class Keep> std::size_t retain(Keep keep);
 };

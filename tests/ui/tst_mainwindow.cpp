@@ -50,8 +50,10 @@ private slots:
         controller->setStepsPerFrame(-5);
         for (int frame = 0; frame < 20; ++frame) controller->advanceFrame();
         const MdState& back = static_cast<const MdModel*>(controller->model())->state();
+        std::map<std::uint32_t, double> startX; // large gases are kept in spatial order: match by id
+        for (std::size_t i = 0; i < start.size(); ++i) startX[start.id[i]] = start.x[i];
         double worst = 0;
-        for (std::size_t i = 0; i < start.size(); ++i) worst = std::max(worst, std::abs(back.x[i] - start.x[i]));
+        for (std::size_t i = 0; i < back.size(); ++i) worst = std::max(worst, std::abs(back.x[i] - startX.at(back.id[i])));
         QVERIFY(worst < 1e-12);
         QVERIFY(std::abs(controller->model()->time()) < 1e-12);
     }

@@ -2,6 +2,7 @@
 #include "MdTestScenes.h"
 
 #include <cmath>
+#include <unordered_map>
 
 namespace pl::test {
 
@@ -29,8 +30,14 @@ std::pair<double, double> totalMomentum(const MdModel& model) {
 }
 
 double rmsDistance(const MdState& a, const MdState& b) {
+    // Large gases are kept in spatial order, so particles are matched by id, not by index.
+    std::unordered_map<std::uint32_t, std::size_t> indexOf;
+    for (std::size_t i = 0; i < b.size(); ++i) indexOf[b.id[i]] = i;
     double sum = 0;
-    for (std::size_t i = 0; i < a.size(); ++i) sum += std::pow(a.x[i] - b.x[i], 2) + std::pow(a.y[i] - b.y[i], 2);
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        const std::size_t j = indexOf.at(a.id[i]);
+        sum += std::pow(a.x[i] - b.x[j], 2) + std::pow(a.y[i] - b.y[j], 2);
+    }
     return std::sqrt(sum / static_cast<double>(a.size()));
 }
 

@@ -13,7 +13,7 @@ MdModel makeGas(const ParamValues& values, std::uint64_t seed = 1, std::vector<O
 // Total momentum recomputed from the state.
 std::pair<double, double> totalMomentum(const MdModel& model);
 
-// Root-mean-square distance between the positions of two states of the same particles.
+// Root-mean-square distance between the positions of two states of the same particles (matched by id).
 double rmsDistance(const MdState& a, const MdState& b);
 
 } // namespace pl::test
