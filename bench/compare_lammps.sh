@@ -17,12 +17,8 @@ trap 'rm -rf "$work"' EXIT
 
 k=1000
 d=0.01
-# Pair table: F = k (d - r) is linear in r, so linear interpolation reproduces it exactly. The inner
-# point is tiny because soft disks pass through each other (r can approach 0).
-awk -v k=$k -v d=$d 'BEGIN {
-  n = 2000; lo = 1e-9; print "# harmonic repulsion"; print "HARMONIC"; print "N " n " R " lo " " d; print "";
-  for (i = 1; i <= n; i++) { r = lo + (d - lo) * (i - 1) / (n - 1); printf "%d %.12g %.12g %.12g\n", i, r, 0.5*k*(d-r)^2, k*(d-r) } }' \
-  >"$work/harmonic.table"
+# atom_style sphere takes a diameter and a density; LAMMPS makes the mass (4/3) π r³ ρ even in 2D.
+density=$(awk -v d=$d 'BEGIN { printf "%.17g", 1 / (4 / 3 * 3.141592653589793 * (d / 2)^3) }')
 
 median() { sort -g | awk '{ v[NR] = $1 } END { print v[int((NR + 1) / 2)] }'; }
 
@@ -31,22 +27,36 @@ run_case() {
   local name=$1 n=$2 half=$3 steps=$4
   local sets=(--set count_a=$n --set box_width=$((2 * half)) --set box_height=$((2 * half)))
   "$cli" run gas-seed "${sets[@]}" --steps 0 --quiet --dump-initial "$work/init.csv"
-  awk -F, -v n=$n -v h=$half 'NR == 1 { next } { x[NR] = $3; y[NR] = $4; vx[NR] = $5; vy[NR] = $6 }
+  awk -F, -v n=$n -v h=$half -v d=$d -v rho="$density" 'NR == 1 { next } { x[NR] = $3; y[NR] = $4; vx[NR] = $5; vy[NR] = $6 }
     END { print "ParticleLab initial state\n"; print n " atoms\n1 atom types\n"; print -h " " h " xlo xhi";
-          print -h " " h " ylo yhi"; print "-0.5 0.5 zlo zhi\n\nMasses\n\n1 1.0\n\nAtoms # atomic\n";
-          for (i = 2; i <= NR; i++) printf "%d 1 %.17g %.17g 0\n", i - 1, x[i], y[i];
-          print "\nVelocities\n"; for (i = 2; i <= NR; i++) printf "%d %.17g %.17g 0\n", i - 1, vx[i], vy[i] }' \
+          print -h " " h " ylo yhi"; print "-0.5 0.5 zlo zhi\n\nAtoms # sphere\n";
+          for (i = 2; i <= NR; i++) printf "%d 1 %s %s %.17g %.17g 0\n", i - 1, d, rho, x[i], y[i];
+          print "\nVelocities\n"; for (i = 2; i <= NR; i++) printf "%d %.17g %.17g 0 0 0 0\n", i - 1, vx[i], vy[i] }' \
     "$work/init.csv" >"$work/data.lmp"
 
+  if [ "$n" -le 4096 ]; then
+    # Same physics first: the kinetic energy after 400 steps from the same state, in both codes.
+    "$cli" run gas-seed "${sets[@]}" --steps 400 --every 400 --quiet --out "$work/ours.csv"
+    (cd "$work" && mpirun --allow-run-as-root -np 1 lmp -screen none -in "$OLDPWD/bench/harmonic.lmp" \
+       -var data data.lmp -var k $k -var steps 400 -var every 400 -var skin 0.005 -echo none -log check.log >/dev/null)
+    ours_ke=$(awk -F, 'END { print $4 }' "$work/ours.csv")
+    lammps_ke=$(awk -v n=$n '/^ +400 / { printf "%.10g", $2 * n }' "$work/check.log")
+    echo "kinetic energy after 400 steps ($name): ParticleLab $ours_ke, LAMMPS $lammps_ke" >&2
+  fi
   local ours1=() ours2=() lammps=()
   for r in $(seq "$repeats"); do
     ours1+=("$("$cli" bench gas-seed "${sets[@]}" --steps "$steps" --repeats 1 --threads 1 | sed 's/.*"p_steps_per_s":\([0-9.e+]*\).*/\1/')")
     ours2+=("$("$cli" bench gas-seed "${sets[@]}" --steps "$steps" --repeats 1 --threads 2 | sed 's/.*"p_steps_per_s":\([0-9.e+]*\).*/\1/')")
-    loop=$(cd "$work" && OMP_NUM_THREADS=1 mpirun --allow-run-as-root --oversubscribe -np 2 lmp -log none -screen none \
-             -in "$OLDPWD/bench/harmonic.lmp" -var data data.lmp -var table harmonic.table -var d $d \
-             -var steps "$steps" -var skin 0.003 -echo none -log lammps.log >/dev/null; \
-           awk '/^Loop time/ { print $4 }' lammps.log)
-    lammps+=("$(awk -v t="$loop" -v n=$n -v s="$steps" 'BEGIN { printf "%.6g", n * s / t }')")
+    # LAMMPS at its best skin of three (0.3 d, 0.5 d, 1.0 d): the comparison favours it, not us.
+    best=0
+    for skin in 0.003 0.005 0.01; do
+      (cd "$work" && OMP_NUM_THREADS=1 mpirun --allow-run-as-root --oversubscribe -np 2 lmp -screen none \
+         -in "$OLDPWD/bench/harmonic.lmp" -var data data.lmp -var k $k -var steps "$steps" -var every 1000000000 \
+         -var skin $skin -echo none -log lammps.log >/dev/null)
+      rate=$(awk -v n=$n -v s="$steps" '/^Loop time/ { printf "%.6g", n * s / $4 }' "$work/lammps.log")
+      best=$(awk -v a="$best" -v b="$rate" 'BEGIN { print (b > a ? b : a) }')
+    done
+    lammps+=("$best")
   done
   local m1 m2 ml
   m1=$(printf '%s\n' "${ours1[@]}" | median)

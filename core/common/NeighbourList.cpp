@@ -1,5 +1,5 @@
-// Neighbour list construction: a gather over the 3×3 cell block, with a per-particle capacity that
-// grows when a particle has more neighbours than it.
+// Neighbour list construction in two gather passes over the 3×3 cell block: count, then fill at the
+// offsets of an exclusive prefix sum.
 #include "NeighbourList.h"
 
 #include "Parallel.h"
@@ -9,15 +9,58 @@
 
 namespace pl {
 
+namespace {
+
+// Calls visit(j) for every j ≠ i within reach² of particle i.
+template <class Visit>
+void forEachNear(const CellList& cells, const double* x, const double* y, std::uint32_t i, double reach2,
+                 Visit&& visit) {
+    const auto& order = cells.order();
+    const auto& start = cells.cellStart();
+    const int nx = cells.cellsX(), ny = cells.cellsY();
+    const int cx = cells.cellX(x[i]), cy = cells.cellY(y[i]);
+    for (int row = std::max(cy - 1, 0); row <= std::min(cy + 1, ny - 1); ++row) {
+        const std::uint32_t first = start[row * nx + std::max(cx - 1, 0)];
+        const std::uint32_t last = start[row * nx + std::min(cx + 1, nx - 1) + 1];
+        for (std::uint32_t k = first; k < last; ++k) {
+            const std::uint32_t j = order[k];
+            const double dx = x[i] - x[j], dy = y[i] - y[j];
+            if (j != i && dx * dx + dy * dy < reach2) visit(j);
+        }
+    }
+}
+
+void exclusivePrefixSum(std::vector<std::uint32_t>& values) {
+    std::uint32_t sum = 0;
+    for (auto& v : values) {
+        const std::uint32_t c = v;
+        v = sum;
+        sum += c;
+    }
+}
+
+// Carries each surviving pair's payload byte from the previous lists of the same particle.
+void carryPayload(std::size_t count, const std::vector<std::uint32_t>& offsets, const std::vector<std::uint32_t>& entries,
+                  std::vector<std::uint8_t>& payload, const std::vector<std::uint32_t>& oldOffsets,
+                  const std::vector<std::uint32_t>& oldEntries, const std::vector<std::uint8_t>& oldPayload) {
+    const auto n = static_cast<long long>(count);
+#pragma omp parallel for schedule(static) if(n >= kParallelMinParticles)
+    for (long long i = 0; i < n; ++i)
+        for (std::uint32_t a = offsets[i]; a < offsets[i + 1]; ++a)
+            for (std::uint32_t b = oldOffsets[i]; b < oldOffsets[i + 1]; ++b)
+                if (oldEntries[b] == entries[a]) payload[a] = oldPayload[b];
+}
+
+} // namespace
+
 void NeighbourList::build(const double* x, const double* y, std::size_t count, double cutoff, double skin,
                           double x0, double y0, double x1, double y1) {
     const double reach = cutoff + skin;
+    const double reach2 = reach * reach;
     skin_ = skin;
-    // Keep the previous lists to carry each surviving pair's payload over.
-    const std::size_t oldStride = stride_;
-    const bool carry = valid_ && counts_.size() == count;
+    const bool carry = valid_ && offsets_.size() == count + 1;
     if (carry) {
-        oldCounts_.swap(counts_);
+        oldOffsets_.swap(offsets_);
         oldEntries_.swap(entries_);
         oldPayload_.swap(payload_);
     }
@@ -25,52 +68,24 @@ void NeighbourList::build(const double* x, const double* y, std::size_t count, d
     const double area = (x1 - x0) * (y1 - y0);
     cells_.configure(x0, y0, x1, y1, std::max(reach, std::sqrt(area / std::max<double>(1.0, count))));
     cells_.build(x, y, count);
-    const auto& order = cells_.order();
-    const auto& start = cells_.cellStart();
-    const int nx = cells_.cellsX(), ny = cells_.cellsY();
-    const double reach2 = reach * reach;
     const auto n = static_cast<long long>(count);
-    counts_.assign(count, 0);
 
-    for (;;) {
-        entries_.resize(count * stride_);
-        std::uint32_t widest = 0;
-#pragma omp parallel for schedule(static) reduction(max : widest) if(n >= kParallelMinParticles)
-        for (long long i = 0; i < n; ++i) {
-            const int cx = cells_.cellX(x[i]), cy = cells_.cellY(y[i]);
-            std::uint32_t found = 0;
-            std::uint32_t* out = entries_.data() + static_cast<std::size_t>(i) * stride_;
-            for (int row = std::max(cy - 1, 0); row <= std::min(cy + 1, ny - 1); ++row) {
-                const std::uint32_t first = start[row * nx + std::max(cx - 1, 0)];
-                const std::uint32_t last = start[row * nx + std::min(cx + 1, nx - 1) + 1];
-                for (std::uint32_t k = first; k < last; ++k) {
-                    const std::uint32_t j = order[k];
-                    const double dx = x[i] - x[j], dy = y[i] - y[j];
-                    if (j == static_cast<std::uint32_t>(i) || dx * dx + dy * dy >= reach2) continue;
-                    if (found < stride_) out[found] = j;
-                    ++found;
-                }
-            }
-            counts_[i] = found;
-            widest = std::max(widest, found);
-        }
-        if (widest <= stride_) break;
-        stride_ = std::max<std::size_t>(2 * stride_, widest + 4); // rare: a denser region than before
-    }
-
-    payload_.assign(count * stride_, 0);
-    if (carry) {
+    offsets_.assign(count + 1, 0);
 #pragma omp parallel for schedule(static) if(n >= kParallelMinParticles)
-        for (long long i = 0; i < n; ++i) {
-            const std::uint32_t* oldList = oldEntries_.data() + static_cast<std::size_t>(i) * oldStride;
-            const std::uint8_t* oldBytes = oldPayload_.data() + static_cast<std::size_t>(i) * oldStride;
-            for (std::uint32_t a = 0; a < counts_[i]; ++a) {
-                const std::uint32_t j = entries_[static_cast<std::size_t>(i) * stride_ + a];
-                for (std::uint32_t b = 0; b < oldCounts_[i]; ++b)
-                    if (oldList[b] == j) payload_[static_cast<std::size_t>(i) * stride_ + a] = oldBytes[b];
-            }
-        }
+    for (long long i = 0; i < n; ++i) {
+        std::uint32_t found = 0;
+        forEachNear(cells_, x, y, static_cast<std::uint32_t>(i), reach2, [&](std::uint32_t) { ++found; });
+        offsets_[i] = found;
     }
+    exclusivePrefixSum(offsets_);
+    entries_.resize(offsets_[count]);
+#pragma omp parallel for schedule(static) if(n >= kParallelMinParticles)
+    for (long long i = 0; i < n; ++i) {
+        std::uint32_t* out = entries_.data() + offsets_[i];
+        forEachNear(cells_, x, y, static_cast<std::uint32_t>(i), reach2, [&](std::uint32_t j) { *out++ = j; });
+    }
+    payload_.assign(entries_.size(), 0);
+    if (carry) carryPayload(count, offsets_, entries_, payload_, oldOffsets_, oldEntries_, oldPayload_);
     builtX_.assign(x, x + count);
     builtY_.assign(y, y + count);
     valid_ = true;
@@ -81,25 +96,26 @@ void NeighbourList::permute(const std::vector<std::uint32_t>& newToOld) {
     if (!valid_) return;
     const std::size_t count = newToOld.size();
     std::vector<std::uint32_t> oldToNew(count);
-    for (std::size_t n = 0; n < count; ++n) oldToNew[newToOld[n]] = static_cast<std::uint32_t>(n);
-    oldCounts_.swap(counts_);
+    for (std::size_t m = 0; m < count; ++m) oldToNew[newToOld[m]] = static_cast<std::uint32_t>(m);
+    oldOffsets_.swap(offsets_);
     oldEntries_.swap(entries_);
     oldPayload_.swap(payload_);
-    counts_.resize(count);
-    entries_.resize(count * stride_);
-    payload_.resize(count * stride_);
-    const auto total = static_cast<long long>(count);
-#pragma omp parallel for schedule(static) if(total >= kParallelMinParticles)
-    for (long long n = 0; n < total; ++n) {
-        const std::size_t from = newToOld[n];
-        counts_[n] = oldCounts_[from];
-        for (std::uint32_t k = 0; k < counts_[n]; ++k) {
-            entries_[static_cast<std::size_t>(n) * stride_ + k] = oldToNew[oldEntries_[from * stride_ + k]];
-            payload_[static_cast<std::size_t>(n) * stride_ + k] = oldPayload_[from * stride_ + k];
+    offsets_.assign(count + 1, 0);
+    for (std::size_t m = 0; m < count; ++m) offsets_[m] = oldOffsets_[newToOld[m] + 1] - oldOffsets_[newToOld[m]];
+    exclusivePrefixSum(offsets_);
+    entries_.resize(oldEntries_.size());
+    payload_.resize(oldPayload_.size());
+    const auto n = static_cast<long long>(count);
+#pragma omp parallel for schedule(static) if(n >= kParallelMinParticles)
+    for (long long m = 0; m < n; ++m) {
+        const std::uint32_t from = oldOffsets_[newToOld[m]];
+        for (std::uint32_t k = 0; k < offsets_[m + 1] - offsets_[m]; ++k) {
+            entries_[offsets_[m] + k] = oldToNew[oldEntries_[from + k]];
+            payload_[offsets_[m] + k] = oldPayload_[from + k];
         }
     }
     std::vector<double> bx(count), by(count);
-    for (std::size_t n = 0; n < count; ++n) bx[n] = builtX_[newToOld[n]], by[n] = builtY_[newToOld[n]];
+    for (std::size_t m = 0; m < count; ++m) bx[m] = builtX_[newToOld[m]], by[m] = builtY_[newToOld[m]];
     builtX_.swap(bx);
     builtY_.swap(by);
 }

@@ -1,7 +1,8 @@
 // Verlet neighbour lists (Verlet 1967; as in LAMMPS): for each particle, the others within
 // cutoff + skin, found through the cell list and reused until some particle has moved more than
-// skin / 2 since the build. Each entry carries one byte of payload (e.g. "this pair was in contact")
-// that survives rebuilds for pairs present in both lists.
+// skin / 2 since the build. Stored compactly (CSR: offsets and packed entries), since a dilute gas has
+// about one neighbour per particle. Each entry carries one byte of payload (e.g. "this pair was in
+// contact") that survives rebuilds and reorderings for pairs present in both lists.
 #pragma once
 
 #include "CellList.h"
@@ -13,8 +14,8 @@ namespace pl {
 
 class NeighbourList {
 public:
-    // Lists every j ≠ i with |r_i − r_j| < reach, reach = cutoff + skin, using cells (reconfigured here
-    // to the box [x0, x1] × [y0, y1] with cells no smaller than reach). Deterministic for any thread count.
+    // Lists every j ≠ i with |r_i − r_j| < reach, reach = cutoff + skin, using cells over the box
+    // [x0, x1] × [y0, y1] no smaller than reach. Deterministic for any thread count.
     void build(const double* x, const double* y, std::size_t count, double cutoff, double skin, double x0, double y0,
                double x1, double y1);
 
@@ -25,27 +26,25 @@ public:
         return !valid_ || maxDisplacementSquared > 0.25 * skin_ * skin_;
     }
     void invalidate() { valid_ = false; }
+    bool valid() const { return valid_; }
     // Follows a reordering of the particles (newToOld[n] = old index of new particle n): rows, entries,
     // payload and build positions are renumbered, so the list stays valid without a rebuild.
     void permute(const std::vector<std::uint32_t>& newToOld);
-    bool valid() const { return valid_; }
 
-    // Neighbours of i are entries()[i·stride() … i·stride() + count(i)).
-    std::uint32_t count(std::size_t i) const { return counts_[i]; }
-    const std::uint32_t* counts() const { return counts_.data(); }
-    std::size_t stride() const { return stride_; }
+    // Neighbours of i are entries()[offsets()[i] … offsets()[i + 1]).
+    const std::uint32_t* offsets() const { return offsets_.data(); }
     const std::uint32_t* entries() const { return entries_.data(); }
     std::uint8_t* payload() { return payload_.data(); }
+    std::uint32_t count(std::size_t i) const { return offsets_[i + 1] - offsets_[i]; }
     const double* builtX() const { return builtX_.data(); }
     const double* builtY() const { return builtY_.data(); }
     long long builds() const { return builds_; }
 
 private:
     CellList cells_;
-    std::size_t stride_ = 16;
-    std::vector<std::uint32_t> counts_, entries_;
+    std::vector<std::uint32_t> offsets_, entries_;
     std::vector<std::uint8_t> payload_;
-    std::vector<std::uint32_t> oldCounts_, oldEntries_;
+    std::vector<std::uint32_t> oldOffsets_, oldEntries_;
     std::vector<std::uint8_t> oldPayload_;
     std::vector<double> builtX_, builtY_;
     double skin_ = 0.0;

@@ -57,10 +57,9 @@ void MdModel::computeForcesNeighbourList(Contacts contacts, double kickAfter, bo
     const SpeciesTable table = speciesTable(params_);
     const double stiffness = params_.stiffness;
     const double gravity = params_.gravity;
-    const std::uint32_t* lists = neighbours_.entries();
-    const std::uint32_t* listSizes = neighbours_.counts();
+    const std::uint32_t* offsets = neighbours_.offsets();
+    const std::uint32_t* entries = neighbours_.entries();
     std::uint8_t* touching = neighbours_.payload(); // in contact at the last counted evaluation
-    const std::size_t stride = neighbours_.stride();
     // Raw pointers: the byte stores of the contact flags may alias anything, and would otherwise make
     // the compiler reload every vector's data pointer after each of them.
     const double* x = s.x.data();
@@ -76,24 +75,22 @@ void MdModel::computeForcesNeighbourList(Contacts contacts, double kickAfter, bo
 
     // firstprivate: each thread reads its own copy of the loop's constants instead of the master's stack.
 #pragma omp parallel for schedule(static) if(count >= kParallelMinParticles)                                         \
-    firstprivate(table, stiffness, gravity, lists, listSizes, touching, stride, x, y, vx, vy, ax, ay, potentialOut,    \
+    firstprivate(table, stiffness, gravity, offsets, entries, touching, x, y, vx, vy, ax, ay, potentialOut,            \
                      virialOut, begunOut, species, contacts, kickAfter, energies)
     for (long long i = 0; i < count; ++i) {
         const double xi = x[i], yi = y[i];
         const double di = table.diameter[species[i]];
-        const std::uint32_t* list = lists + static_cast<std::size_t>(i) * stride;
-        std::uint8_t* wasTouching = touching + static_cast<std::size_t>(i) * stride;
-        const std::uint32_t size = listSizes[i];
+        const std::uint32_t first = offsets[i], last = offsets[i + 1];
         double fx = 0, fy = 0, potential = 0, virial = 0;
         std::uint32_t began = 0;
-        for (std::uint32_t k = 0; k < size; ++k) {
-            const std::uint32_t j = list[k];
+        for (std::uint32_t k = first; k < last; ++k) {
+            const std::uint32_t j = entries[k];
             md::PairResult pair;
             const bool inContact = md::harmonicPair(xi - x[j], yi - y[j], md::contactDiameter(di, table.diameter[species[j]]),
                                                     stiffness, pair);
             if (contacts != Contacts::Ignore) {
-                began += (contacts == Contacts::Count && inContact && !wasTouching[k]) ? 1u : 0u;
-                wasTouching[k] = inContact;
+                began += (contacts == Contacts::Count && inContact && !touching[k]) ? 1u : 0u;
+                touching[k] = inContact;
             }
             if (!inContact) continue;
             fx += pair.fx;
