@@ -12,8 +12,8 @@ packages=(
   libeigen3-dev nlohmann-json3-dev libcli11-dev
   # OpenGL loading and headless contexts; Mesa's software renderer
   libepoxy-dev libegl-dev libgl1-mesa-dri libegl-mesa0 libglx-mesa0
-  # an X server for the GUI tests
-  xvfb xauth
+  # an X server for the GUI tests; the style check
+  xvfb xauth clang-format
 )
 
 missing=()

@@ -30,9 +30,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), controller_(new S
     connect(controller_, &SimulationController::failed, this, [this](const QString& message) {
         QMessageBox::warning(this, tr("The simulation stopped"), message);
     });
-    connect(controller_, &SimulationController::runningChanged, this, [this](bool running) {
-        playAction_->setText(running ? tr("Pause") : tr("Play"));
-    });
+    connect(controller_, &SimulationController::runningChanged, this,
+            [this](bool running) { playAction_->setText(running ? tr("Pause") : tr("Play")); });
 }
 
 void MainWindow::createActions() {
@@ -64,7 +63,8 @@ void MainWindow::createActions() {
             [this](int index) { openPreset(presetPicker_->itemData(index).toString()); });
     bar->addWidget(presetPicker_);
     QAction* open = bar->addAction(tr("Open…"), this, [this] {
-        const QString path = QFileDialog::getOpenFileName(this, tr("Open preset"), {}, tr("Presets (*.json)"));
+        const QString path =
+            QFileDialog::getOpenFileName(this, tr("Open preset"), {}, tr("Presets (*.json)"));
         if (!path.isEmpty()) openPreset(path);
     });
     open->setShortcut(QKeySequence::Open);

@@ -44,7 +44,8 @@ void ParticleView::paintEvent(QPaintEvent*) {
     const auto* md = dynamic_cast<const MdModel*>(controller_->model());
     if (!md) return;
     const MdParams& p = md->parameters();
-    const double scale = std::min((width() - 2.0 * kMarginPx) / p.boxWidth, (height() - 2.0 * kMarginPx) / p.boxHeight);
+    const double scale =
+        std::min((width() - 2.0 * kMarginPx) / p.boxWidth, (height() - 2.0 * kMarginPx) / p.boxHeight);
     const double originX = 0.5 * width(), originY = 0.5 * height();
     auto map = [&](double x, double y) { return QPointF(originX + scale * x, originY - scale * y); };
 
@@ -59,11 +60,15 @@ void ParticleView::paintEvent(QPaintEvent*) {
     painter.setPen(Qt::NoPen);
     painter.setBrush(kObstacle);
     for (const auto& o : md->obstacles()) {
-        if (o.shape == Obstacle::Shape::Disc) painter.drawEllipse(map(o.x, o.y), scale * o.radius, scale * o.radius);
-        else painter.drawRect(QRectF(map(o.x - o.halfWidth, o.y + o.halfHeight), map(o.x + o.halfWidth, o.y - o.halfHeight)));
+        if (o.shape == Obstacle::Shape::Disc)
+            painter.drawEllipse(map(o.x, o.y), scale * o.radius, scale * o.radius);
+        else
+            painter.drawRect(QRectF(map(o.x - o.halfWidth, o.y + o.halfHeight),
+                                    map(o.x + o.halfWidth, o.y - o.halfHeight)));
     }
     const auto& s = md->state();
-    const double radius[2] = {std::max(1.0, 0.5 * scale * p.a.diameter), std::max(1.0, 0.5 * scale * p.b.diameter)};
+    const double radius[2] = {std::max(1.0, 0.5 * scale * p.a.diameter),
+                              std::max(1.0, 0.5 * scale * p.b.diameter)};
     for (std::size_t i = 0; i < s.size(); ++i) {
         painter.setBrush(thermalColor(std::hypot(s.vx[i], s.vy[i]) / colourSpeedMax_));
         const double r = radius[s.species[i]];

@@ -44,7 +44,9 @@ void SimulationController::pause() {
     emit runningChanged(false);
 }
 
-void SimulationController::togglePlay() { isRunning() ? pause() : play(); }
+void SimulationController::togglePlay() {
+    isRunning() ? pause() : play();
+}
 
 void SimulationController::stepOnce() {
     if (!model_) return;
@@ -78,7 +80,8 @@ void SimulationController::advanceFrame() {
     for (int s = 0; s < steps && !model_->failure(); ++s) model_->step();
     stepsSinceClock_ += steps;
     if (rateClock_.isValid() && rateClock_.elapsed() > 500) {
-        stepsPerSecond_ = 1000.0 * static_cast<double>(stepsSinceClock_) / static_cast<double>(rateClock_.restart());
+        stepsPerSecond_ =
+            1000.0 * static_cast<double>(stepsSinceClock_) / static_cast<double>(rateClock_.restart());
         stepsSinceClock_ = 0;
     }
     emit frameAdvanced();

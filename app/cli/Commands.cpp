@@ -35,7 +35,8 @@ void applySets(Preset& preset, const std::vector<std::string>& sets) {
         const ParamSpec* spec = findSpec(*specs, key);
         if (!spec) throw PresetError(key, "--set: unknown parameter '" + key + "' for model " + preset.model);
         ParamValue value = parseValue(*spec, assignment.substr(eq + 1));
-        if (auto problem = checkValue(*spec, value); !problem.empty()) throw PresetError(key, "--set: " + problem);
+        if (auto problem = checkValue(*spec, value); !problem.empty())
+            throw PresetError(key, "--set: " + problem);
         preset.params[key] = std::move(value);
     }
 }
@@ -70,8 +71,8 @@ std::string histogramsCsv(const Model& model) {
         for (std::size_t b = 0; b < h.counts.bins(); ++b) {
             const double lo = h.counts.lo() + static_cast<double>(b) * h.counts.binWidth();
             out << h.name << ',' << lo << ',' << lo + h.counts.binWidth() << ',' << h.counts.count(b) << ','
-                << h.counts.density(b) << ',' << (h.theoryDensity ? h.theoryDensity(h.counts.binCentre(b)) : 0.0)
-                << '\n';
+                << h.counts.density(b) << ','
+                << (h.theoryDensity ? h.theoryDensity(h.counts.binCentre(b)) : 0.0) << '\n';
         }
     }
     return out.str();
@@ -87,8 +88,8 @@ public:
         lastPrint_ = elapsed;
         const double rate = done / elapsed;
         const double eta = rate > 0 ? (total_ - done) / rate : 0.0;
-        std::fprintf(stderr, "%sstep %lld/%lld (%.0f %%), %.0f steps/s, %.1f s left%s", tty_ ? "\r" : "", done, total_,
-                     100.0 * done / std::max(1LL, total_), rate, eta, tty_ ? "   " : "\n");
+        std::fprintf(stderr, "%sstep %lld/%lld (%.0f %%), %.0f steps/s, %.1f s left%s", tty_ ? "\r" : "",
+                     done, total_, 100.0 * done / std::max(1LL, total_), rate, eta, tty_ ? "   " : "\n");
         printed_ = true;
     }
     void finish() {

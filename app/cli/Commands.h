@@ -10,18 +10,18 @@ namespace pl::cli {
 
 enum ExitCode : int {
     kOk = 0,
-    kBadInput = 2,     // unknown preset, bad file, invalid --set
-    kModelFailed = 3,  // the model blew up; its message is printed
-    kCannotWrite = 4,  // an output file could not be written
+    kBadInput = 2,    // unknown preset, bad file, invalid --set
+    kModelFailed = 3, // the model blew up; its message is printed
+    kCannotWrite = 4, // an output file could not be written
 };
 
 struct RunOptions {
-    std::string preset;               // built-in name or file path
-    std::vector<std::string> sets;    // "key=value"
+    std::string preset;            // built-in name or file path
+    std::vector<std::string> sets; // "key=value"
     std::optional<std::uint64_t> seed;
-    int threads = 0;                  // 0: OpenMP's default
+    int threads = 0; // 0: OpenMP's default
     long long steps = 1000;
-    long long every = 100;            // sample observables every this many steps
+    long long every = 100; // sample observables every this many steps
     std::string out, histogram, dumpInitial, dumpFinal;
     bool quiet = false;
 };

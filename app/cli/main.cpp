@@ -16,7 +16,8 @@ int main(int argc, char** argv) {
     runCmd->add_option("--steps", run.steps, "Number of steps")->check(CLI::NonNegativeNumber);
     runCmd->add_option("--set", run.sets, "Override a parameter: key=value (repeatable)");
     runCmd->add_option("--seed", run.seed, "Random seed (default: the preset's)");
-    runCmd->add_option("--threads", run.threads, "OpenMP threads (default: all cores)")->check(CLI::NonNegativeNumber);
+    runCmd->add_option("--threads", run.threads, "OpenMP threads (default: all cores)")
+        ->check(CLI::NonNegativeNumber);
     runCmd->add_option("--every", run.every, "Sample observables every K steps")->check(CLI::PositiveNumber);
     runCmd->add_option("--out", run.out, "Time series CSV");
     runCmd->add_option("--histogram", run.histogram, "Final speed histogram CSV");
@@ -25,12 +26,14 @@ int main(int argc, char** argv) {
     runCmd->add_flag("--quiet", run.quiet, "No progress line");
 
     BenchOptions bench;
-    auto* benchCmd = app.add_subcommand("bench", "Time a preset; print one JSON line with particle-steps per second");
+    auto* benchCmd =
+        app.add_subcommand("bench", "Time a preset; print one JSON line with particle-steps per second");
     benchCmd->add_option("preset", bench.preset, "Built-in preset name or preset file")->required();
     benchCmd->add_option("--steps", bench.steps, "Timed steps per repeat")->check(CLI::PositiveNumber);
     benchCmd->add_option("--set", bench.sets, "Override a parameter: key=value (repeatable)");
     benchCmd->add_option("--threads", bench.threads, "OpenMP threads")->check(CLI::NonNegativeNumber);
-    benchCmd->add_option("--repeats", bench.repeats, "Timed repeats; the median is reported")->check(CLI::PositiveNumber);
+    benchCmd->add_option("--repeats", bench.repeats, "Timed repeats; the median is reported")
+        ->check(CLI::PositiveNumber);
 
     CLI11_PARSE(app, argc, argv);
     if (app.got_subcommand("list")) return listPresets();

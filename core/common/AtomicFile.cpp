@@ -12,7 +12,9 @@
 namespace pl {
 
 namespace {
-std::string systemReason() { return std::strerror(errno); }
+std::string systemReason() {
+    return std::strerror(errno);
+}
 } // namespace
 
 void writeFileAtomically(const std::string& path, std::string_view content) {

@@ -40,11 +40,12 @@ void exclusivePrefixSum(std::vector<std::uint32_t>& values) {
 }
 
 // Carries each surviving pair's payload byte from the previous lists of the same particle.
-void carryPayload(std::size_t count, const std::vector<std::uint32_t>& offsets, const std::vector<std::uint32_t>& entries,
-                  std::vector<std::uint8_t>& payload, const std::vector<std::uint32_t>& oldOffsets,
-                  const std::vector<std::uint32_t>& oldEntries, const std::vector<std::uint8_t>& oldPayload) {
+void carryPayload(std::size_t count, const std::vector<std::uint32_t>& offsets,
+                  const std::vector<std::uint32_t>& entries, std::vector<std::uint8_t>& payload,
+                  const std::vector<std::uint32_t>& oldOffsets, const std::vector<std::uint32_t>& oldEntries,
+                  const std::vector<std::uint8_t>& oldPayload) {
     const auto n = static_cast<long long>(count);
-#pragma omp parallel for schedule(static) if(n >= kParallelMinParticles)
+#pragma omp parallel for schedule(static) if (n >= kParallelMinParticles)
     for (long long i = 0; i < n; ++i)
         for (std::uint32_t a = offsets[i]; a < offsets[i + 1]; ++a)
             for (std::uint32_t b = oldOffsets[i]; b < oldOffsets[i + 1]; ++b)
@@ -71,7 +72,7 @@ void NeighbourList::build(const double* x, const double* y, std::size_t count, d
     const auto n = static_cast<long long>(count);
 
     offsets_.assign(count + 1, 0);
-#pragma omp parallel for schedule(static) if(n >= kParallelMinParticles)
+#pragma omp parallel for schedule(static) if (n >= kParallelMinParticles)
     for (long long i = 0; i < n; ++i) {
         std::uint32_t found = 0;
         forEachNear(cells_, x, y, static_cast<std::uint32_t>(i), reach2, [&](std::uint32_t) { ++found; });
@@ -79,10 +80,11 @@ void NeighbourList::build(const double* x, const double* y, std::size_t count, d
     }
     exclusivePrefixSum(offsets_);
     entries_.resize(offsets_[count]);
-#pragma omp parallel for schedule(static) if(n >= kParallelMinParticles)
+#pragma omp parallel for schedule(static) if (n >= kParallelMinParticles)
     for (long long i = 0; i < n; ++i) {
         std::uint32_t* out = entries_.data() + offsets_[i];
-        forEachNear(cells_, x, y, static_cast<std::uint32_t>(i), reach2, [&](std::uint32_t j) { *out++ = j; });
+        forEachNear(cells_, x, y, static_cast<std::uint32_t>(i), reach2,
+                    [&](std::uint32_t j) { *out++ = j; });
     }
     payload_.assign(entries_.size(), 0);
     if (carry) carryPayload(count, offsets_, entries_, payload_, oldOffsets_, oldEntries_, oldPayload_);
@@ -101,12 +103,13 @@ void NeighbourList::permute(const std::vector<std::uint32_t>& newToOld) {
     oldEntries_.swap(entries_);
     oldPayload_.swap(payload_);
     offsets_.assign(count + 1, 0);
-    for (std::size_t m = 0; m < count; ++m) offsets_[m] = oldOffsets_[newToOld[m] + 1] - oldOffsets_[newToOld[m]];
+    for (std::size_t m = 0; m < count; ++m)
+        offsets_[m] = oldOffsets_[newToOld[m] + 1] - oldOffsets_[newToOld[m]];
     exclusivePrefixSum(offsets_);
     entries_.resize(oldEntries_.size());
     payload_.resize(oldPayload_.size());
     const auto n = static_cast<long long>(count);
-#pragma omp parallel for schedule(static) if(n >= kParallelMinParticles)
+#pragma omp parallel for schedule(static) if (n >= kParallelMinParticles)
     for (long long m = 0; m < n; ++m) {
         const std::uint32_t from = oldOffsets_[newToOld[m]];
         for (std::uint32_t k = 0; k < offsets_[m + 1] - offsets_[m]; ++k) {
@@ -124,7 +127,7 @@ bool NeighbourList::needsRebuild(const double* x, const double* y, std::size_t c
     if (!valid_ || builtX_.size() != count) return true;
     double worst = 0.0;
     const auto n = static_cast<long long>(count);
-#pragma omp parallel for schedule(static) reduction(max : worst) if(n >= kParallelMinParticles)
+#pragma omp parallel for schedule(static) reduction(max : worst) if (n >= kParallelMinParticles)
     for (long long i = 0; i < n; ++i) {
         const double dx = x[i] - builtX_[i], dy = y[i] - builtY_[i];
         worst = std::max(worst, dx * dx + dy * dy);

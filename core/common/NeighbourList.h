@@ -16,8 +16,8 @@ class NeighbourList {
 public:
     // Lists every j ≠ i with |r_i − r_j| < reach, reach = cutoff + skin, using cells over the box
     // [x0, x1] × [y0, y1] no smaller than reach. Deterministic for any thread count.
-    void build(const double* x, const double* y, std::size_t count, double cutoff, double skin, double x0, double y0,
-               double x1, double y1);
+    void build(const double* x, const double* y, std::size_t count, double cutoff, double skin, double x0,
+               double y0, double x1, double y1);
 
     // Largest squared displacement since the build, compared with (skin / 2)²: a pair outside the
     // list cannot have come closer than cutoff while this is false.

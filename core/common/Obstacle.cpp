@@ -21,6 +21,8 @@ double Obstacle::grownArea(double margin) const {
     return 4 * (halfWidth + margin) * (halfHeight + margin);
 }
 
-std::string shapeName(Obstacle::Shape shape) { return shape == Obstacle::Shape::Disc ? "disc" : "box"; }
+std::string shapeName(Obstacle::Shape shape) {
+    return shape == Obstacle::Shape::Disc ? "disc" : "box";
+}
 
 } // namespace pl

@@ -3,8 +3,8 @@
 
 #include <algorithm>
 #include <cctype>
-#include <cstdlib>
 #include <cmath>
+#include <cstdlib>
 #include <sstream>
 
 namespace pl {
@@ -20,18 +20,24 @@ std::string number(double v) {
 
 std::string kindName(ParamKind kind) {
     switch (kind) {
-    case ParamKind::Real: return "a number";
-    case ParamKind::Integer: return "an integer";
-    case ParamKind::Boolean: return "true or false";
-    case ParamKind::Choice: return "a string";
-    case ParamKind::Color: return "a colour string \"#rrggbb\"";
+    case ParamKind::Real:
+        return "a number";
+    case ParamKind::Integer:
+        return "an integer";
+    case ParamKind::Boolean:
+        return "true or false";
+    case ParamKind::Choice:
+        return "a string";
+    case ParamKind::Color:
+        return "a colour string \"#rrggbb\"";
     }
     return "a value";
 }
 
 bool isHexColor(const std::string& s) {
-    return s.size() == 7 && s[0] == '#' &&
-           std::all_of(s.begin() + 1, s.end(), [](char c) { return std::isxdigit(static_cast<unsigned char>(c)); });
+    return s.size() == 7 && s[0] == '#' && std::all_of(s.begin() + 1, s.end(), [](char c) {
+               return std::isxdigit(static_cast<unsigned char>(c));
+           });
 }
 
 } // namespace
@@ -45,8 +51,10 @@ std::string describeAllowed(const ParamSpec& spec) {
         if (!spec.unit.empty()) range += " " + spec.unit;
         return range;
     }
-    case ParamKind::Boolean: return "true or false";
-    case ParamKind::Color: return "\"#rrggbb\"";
+    case ParamKind::Boolean:
+        return "true or false";
+    case ParamKind::Color:
+        return "\"#rrggbb\"";
     case ParamKind::Choice: {
         std::string list = "one of: ";
         for (std::size_t i = 0; i < spec.choices.size(); ++i) list += (i ? ", " : "") + spec.choices[i];
@@ -63,17 +71,20 @@ std::string checkValue(const ParamSpec& spec, const ParamValue& value) {
     case ParamKind::Real:
     case ParamKind::Integer: {
         if (!std::holds_alternative<double>(value))
-            return prefix + "must be " + kindName(spec.kind) + ", got " + formatValue(value) + " (" + allowed + ")";
+            return prefix + "must be " + kindName(spec.kind) + ", got " + formatValue(value) + " (" +
+                   allowed + ")";
         const double v = std::get<double>(value);
         if (!std::isfinite(v)) return prefix + "must be finite, got " + number(v) + " (" + allowed + ")";
         if (spec.kind == ParamKind::Integer && v != std::floor(v))
             return prefix + "must be an integer, got " + number(v) + " (" + allowed + ")";
-        if (v < spec.min || v > spec.max) return prefix + "is out of range: " + number(v) + " (" + allowed + ")";
+        if (v < spec.min || v > spec.max)
+            return prefix + "is out of range: " + number(v) + " (" + allowed + ")";
         if (spec.nonZero && v == 0.0) return prefix + "must not be 0 (" + allowed + ")";
         return {};
     }
     case ParamKind::Boolean:
-        if (!std::holds_alternative<bool>(value)) return prefix + "must be true or false, got " + formatValue(value);
+        if (!std::holds_alternative<bool>(value))
+            return prefix + "must be true or false, got " + formatValue(value);
         return {};
     case ParamKind::Choice: {
         if (!std::holds_alternative<std::string>(value))
@@ -106,10 +117,12 @@ ParamValue parseValue(const ParamSpec& spec, std::string_view text) {
     case ParamKind::Boolean: {
         if (text == "true" || text == "1" || text == "on" || text == "yes") return true;
         if (text == "false" || text == "0" || text == "off" || text == "no") return false;
-        throw ParamError(spec.key, "'" + spec.key + "' must be true or false, got \"" + std::string(text) + "\"");
+        throw ParamError(spec.key,
+                         "'" + spec.key + "' must be true or false, got \"" + std::string(text) + "\"");
     }
     case ParamKind::Choice:
-    case ParamKind::Color: return std::string(text);
+    case ParamKind::Color:
+        return std::string(text);
     }
     return std::string(text);
 }

@@ -48,8 +48,8 @@ enum class RngPurpose : std::uint32_t {
 // sequence a step number or a draw index.
 inline Philox4x32 randomWords(std::uint64_t seed, RngPurpose purpose, std::uint32_t subject,
                               std::uint64_t sequence) {
-    return philox4x32({subject, static_cast<std::uint32_t>(sequence), static_cast<std::uint32_t>(sequence >> 32),
-                       static_cast<std::uint32_t>(purpose)},
+    return philox4x32({subject, static_cast<std::uint32_t>(sequence),
+                       static_cast<std::uint32_t>(sequence >> 32), static_cast<std::uint32_t>(purpose)},
                       {static_cast<std::uint32_t>(seed), static_cast<std::uint32_t>(seed >> 32)});
 }
 
@@ -60,13 +60,17 @@ inline double unitOpen(std::uint32_t hi, std::uint32_t lo) {
 }
 
 // Uniform double in (0, 1) from one word (32 random bits), for draws where that resolution suffices.
-inline double unitOpen32(std::uint32_t w) { return (static_cast<double>(w) + 0.5) * 0x1.0p-32; }
+inline double unitOpen32(std::uint32_t w) {
+    return (static_cast<double>(w) + 0.5) * 0x1.0p-32;
+}
 
 struct UniformPair {
     double a, b;
 };
 
-inline UniformPair uniformPair(const Philox4x32& w) { return {unitOpen(w[0], w[1]), unitOpen(w[2], w[3])}; }
+inline UniformPair uniformPair(const Philox4x32& w) {
+    return {unitOpen(w[0], w[1]), unitOpen(w[2], w[3])};
+}
 
 // Two independent standard normal deviates (Box–Muller).
 inline UniformPair gaussianPair(const Philox4x32& w) {

@@ -27,7 +27,9 @@ void requireOnlyKeys(const Json& object, const std::vector<std::string>& allowed
     }
 }
 
-std::string jsonTypeName(const Json& v) { return v.type_name(); }
+std::string jsonTypeName(const Json& v) {
+    return v.type_name();
+}
 
 ParamValue toParamValue(const Json& v) {
     if (v.is_boolean()) return v.get<bool>();
@@ -36,8 +38,8 @@ ParamValue toParamValue(const Json& v) {
     return std::string("<" + jsonTypeName(v) + ">"); // rejected by checkValue with the type in the message
 }
 
-double finiteNumber(const Json& object, const std::string& key, const std::string& source, const std::string& path,
-                    double minimum) {
+double finiteNumber(const Json& object, const std::string& key, const std::string& source,
+                    const std::string& path, double minimum) {
     const std::string where = path + "." + key;
     if (!object.contains(key)) fail(source, where, "missing '" + where + "'");
     const Json& v = object.at(key);
@@ -68,7 +70,8 @@ Obstacle parseObstacle(const Json& j, const std::string& source, const std::stri
         if (o.halfWidth <= 0 || o.halfHeight <= 0)
             fail(source, path, "'" + path + "' must have positive width and height");
     } else {
-        fail(source, path + ".shape", "'" + path + ".shape' must be \"disc\" or \"box\", got \"" + shape + "\"");
+        fail(source, path + ".shape",
+             "'" + path + ".shape' must be \"disc\" or \"box\", got \"" + shape + "\"");
     }
     o.x = finiteNumber(j, "x", source, path, anywhere);
     o.y = finiteNumber(j, "y", source, path, anywhere);
@@ -108,15 +111,16 @@ Preset parsePreset(std::string_view text, const SpecLookup& specsFor, const std:
         fail(source, "", std::string("not valid JSON: ") + e.what());
     }
     if (!root.is_object()) fail(source, "", "a preset must be a JSON object, got " + jsonTypeName(root));
-    requireOnlyKeys(root, {"schema", "model", "name", "description", "seed", "params", "obstacles"}, source, "");
+    requireOnlyKeys(root, {"schema", "model", "name", "description", "seed", "params", "obstacles"}, source,
+                    "");
 
     if (!root.contains("schema")) fail(source, "schema", "missing 'schema' (this version reads schema 1)");
     const Json& schema = root.at("schema");
     if (!schema.is_number_integer()) fail(source, "schema", "'schema' must be an integer");
     if (schema.get<long long>() != Preset::kSchema)
         fail(source, "schema",
-             "schema " + std::to_string(schema.get<long long>()) + " is not supported (this version reads schema " +
-                 std::to_string(Preset::kSchema) + ")");
+             "schema " + std::to_string(schema.get<long long>()) +
+                 " is not supported (this version reads schema " + std::to_string(Preset::kSchema) + ")");
 
     Preset preset;
     if (!root.contains("model") || !root.at("model").is_string())
@@ -142,7 +146,9 @@ Preset parsePreset(std::string_view text, const SpecLookup& specsFor, const std:
         if (!params.is_object()) fail(source, "params", "'params' must be an object of key: value");
         for (const auto& [key, value] : params.items()) {
             const ParamSpec* spec = findSpec(*specs, key);
-            if (!spec) fail(source, "params." + key, "unknown parameter 'params." + key + "' for model " + preset.model);
+            if (!spec)
+                fail(source, "params." + key,
+                     "unknown parameter 'params." + key + "' for model " + preset.model);
             ParamValue v = toParamValue(value);
             if (auto problem = checkValue(*spec, v); !problem.empty()) fail(source, "params." + key, problem);
             preset.params[key] = std::move(v);
@@ -153,7 +159,8 @@ Preset parsePreset(std::string_view text, const SpecLookup& specsFor, const std:
         const Json& list = root.at("obstacles");
         if (!list.is_array()) fail(source, "obstacles", "'obstacles' must be an array");
         for (std::size_t i = 0; i < list.size(); ++i)
-            preset.obstacles.push_back(parseObstacle(list[i], source, "obstacles[" + std::to_string(i) + "]"));
+            preset.obstacles.push_back(
+                parseObstacle(list[i], source, "obstacles[" + std::to_string(i) + "]"));
     }
     return preset;
 }

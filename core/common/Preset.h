@@ -39,7 +39,8 @@ using SpecLookup = std::function<const std::vector<ParamSpec>*(const std::string
 
 // Parses and validates preset JSON: syntax, schema version, model, every key, type, range and finiteness.
 // Throws PresetError with a message naming the entry and what is allowed. sourceName prefixes messages.
-Preset parsePreset(std::string_view json, const SpecLookup& specsFor, const std::string& sourceName = "preset");
+Preset parsePreset(std::string_view json, const SpecLookup& specsFor,
+                   const std::string& sourceName = "preset");
 
 // Serialises with parameters in spec order (every parameter written, defaults included).
 std::string serializePreset(const Preset& preset, const std::vector<ParamSpec>& specs);

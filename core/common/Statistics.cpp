@@ -38,7 +38,8 @@ double ksCritical(double n, double significance) {
 }
 
 PowerLawFit fitPowerLaw(const std::vector<double>& x, const std::vector<double>& y) {
-    if (x.size() != y.size() || x.size() < 2) throw std::invalid_argument("power-law fit needs two or more points");
+    if (x.size() != y.size() || x.size() < 2)
+        throw std::invalid_argument("power-law fit needs two or more points");
     Eigen::MatrixXd design(static_cast<Eigen::Index>(x.size()), 2);
     Eigen::VectorXd rhs(static_cast<Eigen::Index>(x.size()));
     for (std::size_t i = 0; i < x.size(); ++i) {

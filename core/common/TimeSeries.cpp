@@ -39,8 +39,10 @@ void TimeSeries::writeCsvRow(std::ostream& out, std::size_t i) const {
     const auto& r = rows_[i];
     for (std::size_t c = 0; c < r.size(); ++c) {
         if (c) out << ',';
-        if (std::isnan(r[c])) out << "nan";
-        else out << r[c];
+        if (std::isnan(r[c]))
+            out << "nan";
+        else
+            out << r[c];
     }
     out << '\n';
 }

@@ -33,7 +33,8 @@ bool pathEntry(const Obstacle& o, double radius, double x0, double y0, double dx
     if (o.shape == Obstacle::Shape::Disc) {
         const double grown = o.radius + radius;
         const double rx = x0 - o.x, ry = y0 - o.y;
-        const double a = dx * dx + dy * dy, b = 2.0 * (dx * rx + dy * ry), c = rx * rx + ry * ry - grown * grown;
+        const double a = dx * dx + dy * dy, b = 2.0 * (dx * rx + dy * ry),
+                     c = rx * rx + ry * ry - grown * grown;
         const double discriminant = b * b - 4.0 * a * c;
         if (a == 0.0 || c < 0.0 || discriminant < 0.0) return false;
         s = (-b - std::sqrt(discriminant)) / (2.0 * a);
@@ -69,7 +70,8 @@ void reflectOffObstacle(const Obstacle& o, double nx, double ny, double timeSign
 // and let it travel the rest of the drift with the new velocity. Reflecting at the true entry point
 // (rather than mirroring the end point) retraces exactly under −h. A disk that was already inside,
 // because the obstacle was dragged onto it, is pushed out the shortest way.
-void collideObstacle(const Obstacle& o, double radius, double h, double& x, double& y, double& vx, double& vy) {
+void collideObstacle(const Obstacle& o, double radius, double h, double& x, double& y, double& vx,
+                     double& vy) {
     if (!o.contains(x, y, radius)) return;
     const double timeSign = h >= 0 ? 1.0 : -1.0;
     const double dx = h * vx, dy = h * vy;
@@ -90,8 +92,10 @@ void collideObstacle(const Obstacle& o, double radius, double h, double& x, doub
         depth = o.radius + radius - dist;
     } else {
         const double penX = o.halfWidth + radius - std::abs(rx), penY = o.halfHeight + radius - std::abs(ry);
-        if (penX < penY) nx = rx >= 0 ? 1.0 : -1.0, depth = penX;
-        else ny = ry >= 0 ? 1.0 : -1.0, depth = penY;
+        if (penX < penY)
+            nx = rx >= 0 ? 1.0 : -1.0, depth = penX;
+        else
+            ny = ry >= 0 ? 1.0 : -1.0, depth = penY;
     }
     x += 2.0 * depth * nx;
     y += 2.0 * depth * ny;
@@ -111,7 +115,8 @@ bool Boundaries::reflectOffWalls(double& x, double& y, double& vx, double& vy, i
     const double hitBottom = reflectPlane(y, vy, bottom, -1.0, 0.0, timeSign);
     const double hitTop = reflectPlane(y, vy, top, 1.0, 0.0, timeSign);
     if (thermal && (hitLeft != 0 || (thermalRight && hitRight != 0) || hitBottom != 0 || hitTop != 0)) {
-        const auto v = thermalWallVelocity(wallKT, m, randomWords(seed, RngPurpose::ThermalWall, id, drawIndex));
+        const auto v =
+            thermalWallVelocity(wallKT, m, randomWords(seed, RngPurpose::ThermalWall, id, drawIndex));
         if (hitLeft != 0 || hitRight != 0) {
             vx = (hitLeft != 0 ? 1.0 : -1.0) * v.normal;
             vy = v.tangential;

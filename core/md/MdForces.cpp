@@ -31,8 +31,9 @@ void MdModel::computeForces(Contacts contacts, double kickAfter, bool energies) 
         energies = true; // the comparison path always fills them
     } else {
         const auto n = state_.size();
-        const bool rebuild = maxDisplacement2_ >= 0.0 ? neighbours_.needsRebuild(maxDisplacement2_)
-                                                      : neighbours_.needsRebuild(state_.x.data(), state_.y.data(), n);
+        const bool rebuild = maxDisplacement2_ >= 0.0
+                                 ? neighbours_.needsRebuild(maxDisplacement2_)
+                                 : neighbours_.needsRebuild(state_.x.data(), state_.y.data(), n);
         if (rebuild) {
             const double d = params_.maxDiameter();
             neighbours_.build(state_.x.data(), state_.y.data(), n, d, kSkinOverDiameter * d, params_.left(),
@@ -74,9 +75,9 @@ void MdModel::computeForcesNeighbourList(Contacts contacts, double kickAfter, bo
     const std::uint8_t* species = s.species.data();
 
     // firstprivate: each thread reads its own copy of the loop's constants instead of the master's stack.
-#pragma omp parallel for schedule(static) if(count >= kParallelMinParticles)                                         \
-    firstprivate(table, stiffness, gravity, offsets, entries, touching, x, y, vx, vy, ax, ay, potentialOut,            \
-                     virialOut, begunOut, species, contacts, kickAfter, energies)
+#pragma omp parallel for schedule(static) if (count >= kParallelMinParticles)                                \
+    firstprivate(table, stiffness, gravity, offsets, entries, touching, x, y, vx, vy, ax, ay, potentialOut,  \
+                 virialOut, begunOut, species, contacts, kickAfter, energies)
     for (long long i = 0; i < count; ++i) {
         const double xi = x[i], yi = y[i];
         const double di = table.diameter[species[i]];
@@ -86,8 +87,8 @@ void MdModel::computeForcesNeighbourList(Contacts contacts, double kickAfter, bo
         for (std::uint32_t k = first; k < last; ++k) {
             const std::uint32_t j = entries[k];
             md::PairResult pair;
-            const bool inContact = md::harmonicPair(xi - x[j], yi - y[j], md::contactDiameter(di, table.diameter[species[j]]),
-                                                    stiffness, pair);
+            const bool inContact = md::harmonicPair(
+                xi - x[j], yi - y[j], md::contactDiameter(di, table.diameter[species[j]]), stiffness, pair);
             if (contacts != Contacts::Ignore) {
                 began += (contacts == Contacts::Count && inContact && !touching[k]) ? 1u : 0u;
                 touching[k] = inContact;
@@ -118,7 +119,7 @@ void MdModel::computeForcesAllPairs(Contacts contacts, double kickAfter) {
     const SpeciesTable table = speciesTable(params_);
     const double stiffness = params_.stiffness;
     const double gravity = params_.gravity;
-#pragma omp parallel for schedule(static) if(count >= kParallelMinParticles)
+#pragma omp parallel for schedule(static) if (count >= kParallelMinParticles)
     for (long long i = 0; i < count; ++i) {
         const double xi = s.x[i], yi = s.y[i];
         const double di = table.diameter[s.species[i]];

@@ -10,7 +10,7 @@
 namespace pl {
 
 namespace {
-constexpr int kPlacementTries = 64;      // random draws per disk before giving up on avoiding obstacles
+constexpr int kPlacementTries = 64;          // random draws per disk before giving up on avoiding obstacles
 constexpr double kWallMarginDiameters = 1.5; // the seed keeps centres 1.5 d from the walls
 } // namespace
 
@@ -44,19 +44,22 @@ bool MdModel::insideSpace(double x, double y, double radius) const {
 // Uniform positions as in the seed (overlaps allowed: soft disks push apart); re-drawn inside obstacles.
 void MdModel::placeRandom(long long first, long long count, int species) {
     const auto& sp = params_.species(species);
-    const double margin = std::min(kWallMarginDiameters * sp.diameter, 0.25 * std::min(params_.right() - params_.left(), params_.boxHeight));
+    const double margin = std::min(kWallMarginDiameters * sp.diameter,
+                                   0.25 * std::min(params_.right() - params_.left(), params_.boxHeight));
     const double x0 = params_.left() + margin, width = params_.right() - params_.left() - 2 * margin;
     const double y0 = params_.bottom() + margin, height = params_.boxHeight - 2 * margin;
     for (long long i = first; i < first + count; ++i) {
         bool placed = false;
         for (int attempt = 0; attempt < kPlacementTries && !placed; ++attempt) {
-            const auto [u, v] = uniformPair(randomWords(seed_, RngPurpose::InitialPosition, state_.id[i], attempt));
+            const auto [u, v] =
+                uniformPair(randomWords(seed_, RngPurpose::InitialPosition, state_.id[i], attempt));
             state_.x[i] = x0 + u * width;
             state_.y[i] = y0 + v * height;
             placed = insideSpace(state_.x[i], state_.y[i], 0.5 * sp.diameter);
         }
         if (!placed)
-            throw PresetError("obstacles", "no room for the disks outside the obstacles: make the obstacles smaller");
+            throw PresetError("obstacles",
+                              "no room for the disks outside the obstacles: make the obstacles smaller");
     }
 }
 
@@ -88,10 +91,12 @@ void MdModel::placeLattice() {
     // Fisher–Yates with counter-based draws: reproducible, and mixes species over the lattice.
     for (std::size_t k = sites.size() - 1; k > 0; --k) {
         const auto words = randomWords(seed_, RngPurpose::Shuffle, 0, k);
-        const std::size_t j = static_cast<std::size_t>(unitOpen(words[0], words[1]) * static_cast<double>(k + 1));
+        const std::size_t j =
+            static_cast<std::size_t>(unitOpen(words[0], words[1]) * static_cast<double>(k + 1));
         std::swap(sites[k], sites[std::min(j, k)]);
     }
-    for (long long i = 0; i < total; ++i) std::tie(state_.x[i], state_.y[i]) = sites[static_cast<std::size_t>(i)];
+    for (long long i = 0; i < total; ++i)
+        std::tie(state_.x[i], state_.y[i]) = sites[static_cast<std::size_t>(i)];
 }
 
 void MdModel::assignVelocities() {

@@ -15,7 +15,8 @@ struct PairResult {
     double virial;    // r_ij · f_ij = k (d − r) r [energy]
 };
 
-// Harmonic repulsion (physics.md §1): f_ij = k (d − r) r̂_ij for r < d, zero beyond. Seed: a = k (d − r)/r · dr.
+// Harmonic repulsion (physics.md §1): f_ij = k (d − r) r̂_ij for r < d, zero beyond. Seed: a = k (d − r)/r ·
+// dr.
 inline bool harmonicPair(double dx, double dy, double contactDiameter, double stiffness, PairResult& out) {
     const double r2 = dx * dx + dy * dy;
     if (r2 >= contactDiameter * contactDiameter || r2 < kCoincidentR2) return false;
@@ -30,7 +31,9 @@ inline bool harmonicPair(double dx, double dy, double contactDiameter, double st
 }
 
 // Contact distance of two disks: the mean of their diameters.
-inline double contactDiameter(double di, double dj) { return 0.5 * (di + dj); }
+inline double contactDiameter(double di, double dj) {
+    return 0.5 * (di + dj);
+}
 
 // Mirror reflection off a plane wall at position w whose outward normal points along +axis (sign = +1)
 // or −axis (sign = −1), moving with velocity u along the axis. timeSign is the sign of the drift's time

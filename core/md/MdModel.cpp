@@ -18,9 +18,13 @@ MdIntegrator integratorFromName(const std::string& name) {
     throw std::invalid_argument("unknown integrator '" + name + "'");
 }
 
-MdModel::MdModel() { reset(); }
+MdModel::MdModel() {
+    reset();
+}
 
-ParamValues MdModel::params() const { return valuesOf(params_, MdParams::fields()); }
+ParamValues MdModel::params() const {
+    return valuesOf(params_, MdParams::fields());
+}
 
 void MdModel::setParams(const ParamValues& values) {
     MdParams next = withValues(params_, MdParams::fields(), values);
@@ -28,7 +32,8 @@ void MdModel::setParams(const ParamValues& values) {
     const MdParams before = params_;
     params_ = next;
     integrator_ = integratorFromName(params_.integrator);
-    if (params_.pistonEnabled != before.pistonEnabled || params_.pistonX != before.pistonX) pistonVelocity_ = 0.0;
+    if (params_.pistonEnabled != before.pistonEnabled || params_.pistonX != before.pistonX)
+        pistonVelocity_ = 0.0;
     if (params_.maxDiameter() != before.maxDiameter()) neighbours_.invalidate();
     forcesValid_ = false; // stiffness, gravity or the force method may have changed
     ensureForces();
@@ -36,7 +41,8 @@ void MdModel::setParams(const ParamValues& values) {
 }
 
 void MdModel::reset(const Preset& preset) {
-    if (preset.model != kind()) throw PresetError("model", "preset is for model '" + preset.model + "', not gas");
+    if (preset.model != kind())
+        throw PresetError("model", "preset is for model '" + preset.model + "', not gas");
     MdParams next;
     try {
         next = withValues(MdParams{}, MdParams::fields(), preset.params);
@@ -88,8 +94,8 @@ void MdModel::step() {
     if (failure_) return;
     ensureForces();
     constexpr std::int64_t kSortInterval = 100; // disks move about one diameter in this many steps
-    if (static_cast<long long>(state_.size()) >= kParallelMinParticles && params_.forceMethod != "all-pairs" &&
-        (lastSortStep_ < 0 || step_ - lastSortStep_ >= kSortInterval))
+    if (static_cast<long long>(state_.size()) >= kParallelMinParticles &&
+        params_.forceMethod != "all-pairs" && (lastSortStep_ < 0 || step_ - lastSortStep_ >= kSortInterval))
         sortBySpace();
     if (params_.forceMethod == "all-pairs") { // contacts begun are found against the previous positions
         xPrev_ = state_.x;
@@ -98,11 +104,21 @@ void MdModel::step() {
     driftIndex_ = 0;
     const double h = params_.dt;
     switch (integrator_) {
-    case MdIntegrator::VelocityVerlet: stepVelocityVerlet(h); break;
-    case MdIntegrator::SymplecticEuler: stepSymplecticEuler(h); break;
-    case MdIntegrator::ExplicitEuler: stepExplicitEuler(h); break;
-    case MdIntegrator::RungeKutta4: stepRungeKutta4(h); break;
-    case MdIntegrator::ForestRuth: stepForestRuth(h); break;
+    case MdIntegrator::VelocityVerlet:
+        stepVelocityVerlet(h);
+        break;
+    case MdIntegrator::SymplecticEuler:
+        stepSymplecticEuler(h);
+        break;
+    case MdIntegrator::ExplicitEuler:
+        stepExplicitEuler(h);
+        break;
+    case MdIntegrator::RungeKutta4:
+        stepRungeKutta4(h);
+        break;
+    case MdIntegrator::ForestRuth:
+        stepForestRuth(h);
+        break;
     }
     ++step_;
     time_ += h;
@@ -165,16 +181,46 @@ void MdModel::movePiston(double x, double velocity) {
 }
 
 std::vector<std::string> MdModel::seriesColumns() const {
-    return {"step",     "time",     "particles", "kinetic",         "potential",     "total",
-            "kT",       "kT_a",     "kT_b",      "px",              "py",            "pressure_virial",
-            "pressure_wall", "pressure_ideal", "ks_a", "ks_b", "collision_rate", "energy_drift"};
+    return {"step",
+            "time",
+            "particles",
+            "kinetic",
+            "potential",
+            "total",
+            "kT",
+            "kT_a",
+            "kT_b",
+            "px",
+            "py",
+            "pressure_virial",
+            "pressure_wall",
+            "pressure_ideal",
+            "ks_a",
+            "ks_b",
+            "collision_rate",
+            "energy_drift"};
 }
 
 std::vector<double> MdModel::sampleSeries() {
     const MdObservables o = observe();
-    return {static_cast<double>(o.step), o.time, static_cast<double>(o.particles), o.kinetic, o.potential,
-            o.total, o.kT, o.kTSpecies[0], o.kTSpecies[1], o.px, o.py, o.pressureVirial, o.pressureWall,
-            o.pressureIdeal, o.ksDistance[0], o.ksDistance[1], o.collisionRate, o.energyDrift};
+    return {static_cast<double>(o.step),
+            o.time,
+            static_cast<double>(o.particles),
+            o.kinetic,
+            o.potential,
+            o.total,
+            o.kT,
+            o.kTSpecies[0],
+            o.kTSpecies[1],
+            o.px,
+            o.py,
+            o.pressureVirial,
+            o.pressureWall,
+            o.pressureIdeal,
+            o.ksDistance[0],
+            o.ksDistance[1],
+            o.collisionRate,
+            o.energyDrift};
 }
 
 std::vector<NamedHistogram> MdModel::histograms() const {
@@ -189,8 +235,8 @@ void MdModel::writeParticles(std::ostream& out) const {
     const auto precision = out.precision(17);
     out << "id,species,x,y,vx,vy\n";
     for (std::size_t i = 0; i < state_.size(); ++i)
-        out << state_.id[i] << ',' << int(state_.species[i]) << ',' << state_.x[i] << ',' << state_.y[i] << ','
-            << state_.vx[i] << ',' << state_.vy[i] << '\n';
+        out << state_.id[i] << ',' << int(state_.species[i]) << ',' << state_.x[i] << ',' << state_.y[i]
+            << ',' << state_.vx[i] << ',' << state_.vy[i] << '\n';
     out.precision(precision);
 }
 

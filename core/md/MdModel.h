@@ -5,8 +5,8 @@
 #include "MdParams.h"
 #include "MdState.h"
 #include "common/CellList.h"
-#include "common/NeighbourList.h"
 #include "common/Model.h"
+#include "common/NeighbourList.h"
 #include "common/Obstacle.h"
 
 #include <array>
@@ -27,11 +27,11 @@ struct MdObservables {
     std::array<double, 2> kTSpecies{};            // NaN for an absent species
     double px = 0, py = 0;                        // total momentum [M·L/T]
     double pressureVirial = 0;                    // (N kT + ½ Σ r·f) / A, instantaneous [energy/L²]
-    double pressureWall = 0;                      // wall impulse / (perimeter × time) over the window; NaN before any time passed
-    double pressureIdeal = 0;                     // N kT / A
-    std::array<double, 2> ksDistance{};           // KS distance of speeds to 2D Maxwell–Boltzmann at measured kT
-    double collisionRate = 0;                     // contacts begun per unit time since the last sample
-    double energyDrift = 0;                       // |E − E₀| / |E₀| since the last reset or user change
+    double pressureWall = 0; // wall impulse / (perimeter × time) over the window; NaN before any time passed
+    double pressureIdeal = 0;           // N kT / A
+    std::array<double, 2> ksDistance{}; // KS distance of speeds to 2D Maxwell–Boltzmann at measured kT
+    double collisionRate = 0;           // contacts begun per unit time since the last sample
+    double energyDrift = 0;             // |E − E₀| / |E₀| since the last reset or user change
 };
 
 struct MdParticle {
@@ -73,7 +73,7 @@ public:
     const MdParams& parameters() const { return params_; }
     const MdState& state() const { return state_; }
     MdObservables observe(); // closes the wall-impulse and contact windows
-    double totalEnergy(); // kinetic + pair + gravity energy of the current state
+    double totalEnergy();    // kinetic + pair + gravity energy of the current state
     NamedHistogram speedHistogram(int species) const;
 
     const std::vector<Obstacle>& obstacles() const { return obstacles_; }
@@ -140,8 +140,8 @@ private:
     MdIntegrator integrator_ = MdIntegrator::VelocityVerlet;
 
     MdState state_;
-    NeighbourList neighbours_;          // payload byte per pair: in contact at the last counted evaluation
-    double maxDisplacement2_ = -1.0;    // since the list build, from the last drift; −1 when unknown
+    NeighbourList neighbours_;       // payload byte per pair: in contact at the last counted evaluation
+    double maxDisplacement2_ = -1.0; // since the list build, from the last drift; −1 when unknown
     CellList sortCells_;
     std::int64_t lastSortStep_ = -1;
     std::vector<double> xPrev_, yPrev_; // positions at the start of the step (all-pairs contact detection)

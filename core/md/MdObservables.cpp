@@ -45,7 +45,8 @@ MdObservables MdModel::observe() {
     const auto n = static_cast<double>(state_.size());
     // Reflecting walls do not conserve momentum: 2 degrees of freedom per disk (physics.md §1).
     o.kT = n > 0 ? o.kinetic / n : 0.0;
-    for (int s = 0; s < 2; ++s) o.kTSpecies[s] = countSpecies[s] > 0 ? kineticSpecies[s] / countSpecies[s] : kNaN;
+    for (int s = 0; s < 2; ++s)
+        o.kTSpecies[s] = countSpecies[s] > 0 ? kineticSpecies[s] / countSpecies[s] : kNaN;
 
     double area = (params_.right() - params_.left()) * params_.boxHeight;
     for (const auto& ob : obstacles_) area -= ob.grownArea(0.5 * params_.a.diameter);
@@ -59,7 +60,8 @@ MdObservables MdModel::observe() {
     if (elapsed != 0.0) wallWindow_.push_back({impulse, elapsed, perimeter * elapsed});
     double windowTime = 0.0;
     for (const auto& w : wallWindow_) windowTime += std::abs(w.duration);
-    while (wallWindow_.size() > 1 && windowTime - std::abs(wallWindow_.front().duration) >= params_.pressureWindow) {
+    while (wallWindow_.size() > 1 &&
+           windowTime - std::abs(wallWindow_.front().duration) >= params_.pressureWindow) {
         windowTime -= std::abs(wallWindow_.front().duration);
         wallWindow_.pop_front();
     }
@@ -80,7 +82,8 @@ MdObservables MdModel::observe() {
         const double kT = o.kTSpecies[s], m = mass[s];
         o.ksDistance[s] = ksDistance(speeds, [kT, m](double v) { return rayleighCdf(v, kT, m); });
     }
-    o.energyDrift = energyBaseline_ != 0.0 ? std::abs(o.total - energyBaseline_) / std::abs(energyBaseline_) : 0.0;
+    o.energyDrift =
+        energyBaseline_ != 0.0 ? std::abs(o.total - energyBaseline_) / std::abs(energyBaseline_) : 0.0;
     return o;
 }
 

@@ -12,16 +12,19 @@ namespace pl {
 namespace {
 
 constexpr double kMaxAreaFraction = 0.9; // beyond this the disks cannot be placed, even on a lattice
-constexpr double kBytesPerDisk = 240.0;  // SoA state, accumulators, cell list and sorted copies
+constexpr double kBytesPerDisk = 240.0;
+constexpr double kMaxDisks =
+    1
+    << 26; // upper bound of every count field (67 M)  // SoA state, accumulators, cell list and sorted copies
 
-ParamSpec spec(const char* key, const char* label, const char* unit, const char* group, const char* tooltip,
+ParamSpec spec(std::string key, std::string label, std::string unit, std::string group, std::string tooltip,
                double min, double max, double step, ParamValue def, bool live = false) {
     ParamSpec s;
-    s.key = key;
-    s.label = label;
-    s.unit = unit;
-    s.group = group;
-    s.tooltip = tooltip;
+    s.key = std::move(key);
+    s.label = std::move(label);
+    s.unit = std::move(unit);
+    s.group = std::move(group);
+    s.tooltip = std::move(tooltip);
     s.min = min;
     s.max = max;
     s.step = step;
@@ -30,7 +33,7 @@ ParamSpec spec(const char* key, const char* label, const char* unit, const char*
     return s;
 }
 
-ParamSpec choice(const char* key, const char* label, const char* group, const char* tooltip,
+ParamSpec choice(std::string key, std::string label, std::string group, std::string tooltip,
                  std::vector<std::string> choices, bool live = false) {
     ParamSpec s = spec(key, label, "", group, tooltip, 0, 0, 0, choices.front(), live);
     s.kind = ParamKind::Choice;
@@ -38,65 +41,137 @@ ParamSpec choice(const char* key, const char* label, const char* group, const ch
     return s;
 }
 
-ParamSpec color(const char* key, const char* label, const char* group, const char* def) {
-    ParamSpec s = spec(key, label, "", group, "Colour of this species when disks are coloured by species.", 0, 0, 0,
-                       std::string(def), true);
+ParamSpec color(std::string key, std::string label, std::string group, std::string def) {
+    ParamSpec s = spec(key, label, "", group, "Colour of this species when disks are coloured by species.", 0,
+                       0, 0, std::move(def), true);
     s.kind = ParamKind::Color;
     return s;
 }
 
 // Species fields live one struct deeper; bind them through explicit get/set closures.
 template <class T>
-ParamField<MdParams> speciesField(MdSpeciesParams MdParams::*species, T MdSpeciesParams::*member, ParamSpec s) {
+ParamField<MdParams> speciesField(MdSpeciesParams MdParams::*species, T MdSpeciesParams::*member,
+                                  ParamSpec s) {
     ParamField<MdParams> f;
     if constexpr (std::is_same_v<T, long long>) s.kind = ParamKind::Integer;
     f.spec = std::move(s);
     f.get = [=](const MdParams& p) -> ParamValue {
-        if constexpr (std::is_same_v<T, long long>) return static_cast<double>((p.*species).*member);
-        else return (p.*species).*member;
+        if constexpr (std::is_same_v<T, long long>)
+            return static_cast<double>((p.*species).*member);
+        else
+            return (p.*species).*member;
     };
     f.set = [=](MdParams& p, const ParamValue& v) {
-        if constexpr (std::is_same_v<T, long long>) (p.*species).*member = static_cast<long long>(std::get<double>(v));
-        else (p.*species).*member = std::get<T>(v);
+        if constexpr (std::is_same_v<T, long long>)
+            (p.*species).*member = static_cast<long long>(std::get<double>(v));
+        else
+            (p.*species).*member = std::get<T>(v);
     };
     return f;
+}
+
+// The four rows of one species: count, mass, diameter, colour (keys count_a, mass_b, …).
+void addSpecies(std::vector<ParamField<MdParams>>& f, MdSpeciesParams MdParams::*member,
+                const std::string& name, const MdSpeciesParams& d, const std::string& countNote,
+                const std::string& diameterNote) {
+    const std::string key = name == "A" ? "a" : "b";
+    const std::string group = "Species " + name;
+    f.push_back(speciesField(member, &MdSpeciesParams::count,
+                             spec("count_" + key, "Disks (" + name + ")", "", group,
+                                  "Number of disks of species " + name + "; " + countNote, 0, kMaxDisks, 1,
+                                  double(d.count))));
+    f.push_back(speciesField(member, &MdSpeciesParams::mass,
+                             spec("mass_" + key, "Mass (" + name + ")", "M", group,
+                                  "Mass of one " + name + " disk.", 1e-6, 1e6, 0.1, d.mass)));
+    f.push_back(speciesField(member, &MdSpeciesParams::diameter,
+                             spec("diameter_" + key, "Diameter (" + name + ")", "L", group,
+                                  "Contact diameter of one " + name + " disk." + diameterNote, 1e-6, 1e3,
+                                  0.001, d.diameter)));
+    f.push_back(speciesField(member, &MdSpeciesParams::color,
+                             color("color_" + key, "Colour (" + name + ")", group, d.color)));
 }
 
 std::vector<ParamField<MdParams>> makeFields() {
     using P = MdParams;
     const MdParams d;
     std::vector<ParamField<P>> f;
-    const double maxCount = 1 << 26;
-    f.push_back(bindReal(&P::boxWidth, spec("box_width", "Box width", "L", "Box", "Width of the container; the seed's box is 2 wide.", 1e-3, 1e5, 0.1, d.boxWidth)));
-    f.push_back(bindReal(&P::boxHeight, spec("box_height", "Box height", "L", "Box", "Height of the container; the seed's box is 2 high.", 1e-3, 1e5, 0.1, d.boxHeight)));
-    f.push_back(speciesField(&P::a, &MdSpeciesParams::count, spec("count_a", "Disks (A)", "", "Species A", "Number of disks of species A; the seed has 4096.", 0, maxCount, 1, double(d.a.count))));
-    f.push_back(speciesField(&P::a, &MdSpeciesParams::mass, spec("mass_a", "Mass (A)", "M", "Species A", "Mass of one A disk.", 1e-6, 1e6, 0.1, d.a.mass)));
-    f.push_back(speciesField(&P::a, &MdSpeciesParams::diameter, spec("diameter_a", "Diameter (A)", "L", "Species A", "Contact diameter of an A disk; the seed uses 0.01.", 1e-6, 1e3, 0.001, d.a.diameter)));
-    f.push_back(speciesField(&P::a, &MdSpeciesParams::color, color("color_a", "Colour (A)", "Species A", "#6e87b0")));
-    f.push_back(speciesField(&P::b, &MdSpeciesParams::count, spec("count_b", "Disks (B)", "", "Species B", "Number of disks of species B; 0 for a one-species gas.", 0, maxCount, 1, double(d.b.count))));
-    f.push_back(speciesField(&P::b, &MdSpeciesParams::mass, spec("mass_b", "Mass (B)", "M", "Species B", "Mass of one B disk.", 1e-6, 1e6, 0.1, d.b.mass)));
-    f.push_back(speciesField(&P::b, &MdSpeciesParams::diameter, spec("diameter_b", "Diameter (B)", "L", "Species B", "Contact diameter of a B disk.", 1e-6, 1e3, 0.001, d.b.diameter)));
-    f.push_back(speciesField(&P::b, &MdSpeciesParams::color, color("color_b", "Colour (B)", "Species B", "#c87d3b")));
-    f.push_back(bindReal(&P::stiffness, spec("stiffness", "Stiffness k", "M/T²", "Interaction", "Spring constant of the harmonic repulsion U = k/2 (d − r)²; the seed uses 1000.", 1e-6, 1e12, 100, d.stiffness, true)));
-    f.push_back(bindText(&P::initVelocity, choice("init_velocity", "Initial velocities", "Initial state", "fixed-speed: every disk at init_speed in a random direction (the seed); maxwell-boltzmann: Gaussian components at init_kT.", {"fixed-speed", "maxwell-boltzmann"})));
-    f.push_back(bindReal(&P::initSpeed, spec("init_speed", "Initial speed", "L/T", "Initial state", "Speed of every disk for fixed-speed starts; the seed uses 1.", 0, 1e6, 0.1, d.initSpeed)));
-    f.push_back(bindReal(&P::initKT, spec("init_kT", "Initial kT", "M·L²/T²", "Initial state", "Temperature of maxwell-boltzmann starts and of spawned disks.", 0, 1e12, 0.1, d.initKT, true)));
-    f.push_back(bindText(&P::initPlacement, choice("init_placement", "Initial placement", "Initial state", "random: uniform positions, overlaps allowed (the seed); lattice: a square lattice, no overlaps.", {"random", "lattice"})));
-    f.push_back(bindText(&P::integrator, choice("integrator", "Integrator", "Integration", "Time-stepping method; velocity Verlet is symplectic and time-reversible.", MdParams::integratorNames(), true)));
-    ParamSpec dt = spec("dt", "Time step", "T", "Integration", "Signed step; negative runs time backwards. The seed uses 1e-4.", -1, 1, 1e-5, d.dt, true);
+    f.push_back(bindReal(&P::boxWidth, spec("box_width", "Box width", "L", "Box",
+                                            "Width of the container; the seed's box is 2 wide.", 1e-3, 1e5,
+                                            0.1, d.boxWidth)));
+    f.push_back(bindReal(&P::boxHeight, spec("box_height", "Box height", "L", "Box",
+                                             "Height of the container; the seed's box is 2 high.", 1e-3, 1e5,
+                                             0.1, d.boxHeight)));
+    addSpecies(f, &P::a, "A", d.a, "the seed has 4096.", " The seed uses 0.01.");
+    addSpecies(f, &P::b, "B", d.b, "0 for a one-species gas.", "");
+    f.push_back(bindReal(
+        &P::stiffness, spec("stiffness", "Stiffness k", "M/T²", "Interaction",
+                            "Spring constant of the harmonic repulsion U = k/2 (d − r)²; the seed uses 1000.",
+                            1e-6, 1e12, 100, d.stiffness, true)));
+    f.push_back(
+        bindText(&P::initVelocity, choice("init_velocity", "Initial velocities", "Initial state",
+                                          "fixed-speed: every disk at init_speed in a random direction (the "
+                                          "seed); maxwell-boltzmann: Gaussian components at init_kT.",
+                                          {"fixed-speed", "maxwell-boltzmann"})));
+    f.push_back(bindReal(&P::initSpeed, spec("init_speed", "Initial speed", "L/T", "Initial state",
+                                             "Speed of every disk for fixed-speed starts; the seed uses 1.",
+                                             0, 1e6, 0.1, d.initSpeed)));
+    f.push_back(bindReal(&P::initKT, spec("init_kT", "Initial kT", "M·L²/T²", "Initial state",
+                                          "Temperature of maxwell-boltzmann starts and of spawned disks.", 0,
+                                          1e12, 0.1, d.initKT, true)));
+    f.push_back(bindText(
+        &P::initPlacement,
+        choice(
+            "init_placement", "Initial placement", "Initial state",
+            "random: uniform positions, overlaps allowed (the seed); lattice: a square lattice, no overlaps.",
+            {"random", "lattice"})));
+    f.push_back(bindText(&P::integrator,
+                         choice("integrator", "Integrator", "Integration",
+                                "Time-stepping method; velocity Verlet is symplectic and time-reversible.",
+                                MdParams::integratorNames(), true)));
+    ParamSpec dt =
+        spec("dt", "Time step", "T", "Integration",
+             "Signed step; negative runs time backwards. The seed uses 1e-4.", -1, 1, 1e-5, d.dt, true);
     dt.nonZero = true;
     f.push_back(bindReal(&P::dt, dt));
-    f.push_back(bindText(&P::forceMethod, choice("force_method", "Force search", "Integration", "cell-list: O(N) neighbour search; all-pairs: the seed's O(N²) loop, for comparison.", {"cell-list", "all-pairs"}, true)));
-    f.push_back(bindReal(&P::gravity, spec("gravity", "Gravity", "L/T²", "Walls and fields", "Downward acceleration; 0 for none.", 0, 1e6, 0.1, d.gravity, true)));
-    f.push_back(bindBool(&P::pistonEnabled, spec("piston_enabled", "Piston", "", "Walls and fields", "Replace the right wall by a movable piston.", 0, 0, 0, d.pistonEnabled, true)));
-    f.push_back(bindReal(&P::pistonX, spec("piston_x", "Piston position", "L", "Walls and fields", "x of the piston; moving it compresses or expands the gas.", -5e4, 5e4, 0.01, d.pistonX, true)));
-    f.push_back(bindText(&P::wallMode, choice("wall_mode", "Walls", "Walls and fields", "reflecting: elastic walls; thermal: disks leave a wall with velocities drawn at wall_kT (heating or cooling).", {"reflecting", "thermal"}, true)));
-    f.push_back(bindReal(&P::wallKT, spec("wall_kT", "Wall kT", "M·L²/T²", "Walls and fields", "Temperature of thermal walls.", 0, 1e12, 0.05, d.wallKT, true)));
-    f.push_back(bindInteger(&P::maxParticles, spec("max_particles", "Particle cap", "", "Limits", "Most disks the scene may hold; spawning stops here.", 1, maxCount, 1000, double(d.maxParticles), true)));
-    f.push_back(bindReal(&P::spawnMaxOverlap, spec("spawn_max_overlap", "Spawn overlap limit", "d", "Limits", "A spawned disk overlapping another by more than this fraction of a diameter is refused.", 0, 1, 0.05, d.spawnMaxOverlap, true)));
-    f.push_back(bindInteger(&P::histogramBins, spec("histogram_bins", "Histogram bins", "", "Observation", "Bins of the speed histogram.", 5, 1000, 5, double(d.histogramBins), true)));
-    f.push_back(bindReal(&P::pressureWindow, spec("pressure_window", "Pressure window", "T", "Observation", "Time over which wall impulses are averaged into a pressure.", 1e-9, 1e9, 0.1, d.pressureWindow, true)));
-    f.push_back(bindReal(&P::blowupEnergyFactor, spec("blowup_energy_factor", "Blow-up factor", "", "Observation", "The run stops when the total energy exceeds this multiple of its reference.", 1.5, 1e12, 10, d.blowupEnergyFactor, true)));
+    f.push_back(
+        bindText(&P::forceMethod,
+                 choice("force_method", "Force search", "Integration",
+                        "cell-list: O(N) neighbour search; all-pairs: the seed's O(N²) loop, for comparison.",
+                        {"cell-list", "all-pairs"}, true)));
+    f.push_back(
+        bindReal(&P::gravity, spec("gravity", "Gravity", "L/T²", "Walls and fields",
+                                   "Downward acceleration; 0 for none.", 0, 1e6, 0.1, d.gravity, true)));
+    f.push_back(bindBool(&P::pistonEnabled, spec("piston_enabled", "Piston", "", "Walls and fields",
+                                                 "Replace the right wall by a movable piston.", 0, 0, 0,
+                                                 d.pistonEnabled, true)));
+    f.push_back(bindReal(&P::pistonX, spec("piston_x", "Piston position", "L", "Walls and fields",
+                                           "x of the piston; moving it compresses or expands the gas.", -5e4,
+                                           5e4, 0.01, d.pistonX, true)));
+    f.push_back(bindText(&P::wallMode, choice("wall_mode", "Walls", "Walls and fields",
+                                              "reflecting: elastic walls; thermal: disks leave a wall with "
+                                              "velocities drawn at wall_kT (heating or cooling).",
+                                              {"reflecting", "thermal"}, true)));
+    f.push_back(bindReal(&P::wallKT, spec("wall_kT", "Wall kT", "M·L²/T²", "Walls and fields",
+                                          "Temperature of thermal walls.", 0, 1e12, 0.05, d.wallKT, true)));
+    f.push_back(bindInteger(&P::maxParticles, spec("max_particles", "Particle cap", "", "Limits",
+                                                   "Most disks the scene may hold; spawning stops here.", 1,
+                                                   kMaxDisks, 1000, double(d.maxParticles), true)));
+    f.push_back(bindReal(
+        &P::spawnMaxOverlap,
+        spec("spawn_max_overlap", "Spawn overlap limit", "d", "Limits",
+             "A spawned disk overlapping another by more than this fraction of a diameter is refused.", 0, 1,
+             0.05, d.spawnMaxOverlap, true)));
+    f.push_back(bindInteger(&P::histogramBins,
+                            spec("histogram_bins", "Histogram bins", "", "Observation",
+                                 "Bins of the speed histogram.", 5, 1000, 5, double(d.histogramBins), true)));
+    f.push_back(
+        bindReal(&P::pressureWindow, spec("pressure_window", "Pressure window", "T", "Observation",
+                                          "Time over which wall impulses are averaged into a pressure.", 1e-9,
+                                          1e9, 0.1, d.pressureWindow, true)));
+    f.push_back(bindReal(&P::blowupEnergyFactor,
+                         spec("blowup_energy_factor", "Blow-up factor", "", "Observation",
+                              "The run stops when the total energy exceeds this multiple of its reference.",
+                              1.5, 1e12, 10, d.blowupEnergyFactor, true)));
     return f;
 }
 
@@ -116,8 +191,8 @@ double MdParams::maxDiameter() const {
 }
 
 const std::vector<std::string>& MdParams::integratorNames() {
-    static const std::vector<std::string> names{"velocity-verlet", "symplectic-euler", "explicit-euler", "rk4",
-                                                "forest-ruth"};
+    static const std::vector<std::string> names{"velocity-verlet", "symplectic-euler", "explicit-euler",
+                                                "rk4", "forest-ruth"};
     return names;
 }
 
@@ -140,29 +215,32 @@ double MdParams::defaultMemoryBudget() {
 void MdParams::validate(double memoryBudget) const {
     const long long n = totalCount();
     if (n > maxParticles)
-        throw ParamError("count_a", "count_a + count_b = " + std::to_string(n) + " exceeds max_particles = " +
-                                        std::to_string(maxParticles));
+        throw ParamError("count_a", "count_a + count_b = " + std::to_string(n) +
+                                        " exceeds max_particles = " + std::to_string(maxParticles));
     if (n * kBytesPerDisk > memoryBudget)
-        throw ParamError("count_a", std::to_string(n) + " disks need about " + number(n * kBytesPerDisk / 1e9) +
-                                        " GB, more than the " + number(memoryBudget / 1e9) +
-                                        " GB allowed (half the physical memory): at most " +
-                                        std::to_string(static_cast<long long>(memoryBudget / kBytesPerDisk)) + " disks");
+        throw ParamError("count_a",
+                         std::to_string(n) + " disks need about " + number(n * kBytesPerDisk / 1e9) +
+                             " GB, more than the " + number(memoryBudget / 1e9) +
+                             " GB allowed (half the physical memory): at most " +
+                             std::to_string(static_cast<long long>(memoryBudget / kBytesPerDisk)) + " disks");
     if (pistonEnabled && !(pistonX > left() + maxDiameter() && pistonX <= 0.5 * boxWidth))
         throw ParamError("piston_x", "'piston_x' = " + number(pistonX) + " must lie inside the box, in (" +
-                                         number(left() + maxDiameter()) + ", " + number(0.5 * boxWidth) + "]");
+                                         number(left() + maxDiameter()) + ", " + number(0.5 * boxWidth) +
+                                         "]");
     const double area = (right() - left()) * boxHeight;
-    const double disks = std::numbers::pi / 4 *
-                         (a.count * a.diameter * a.diameter + b.count * b.diameter * b.diameter);
+    const double disks =
+        std::numbers::pi / 4 * (a.count * a.diameter * a.diameter + b.count * b.diameter * b.diameter);
     if (disks > kMaxAreaFraction * area) {
         const std::string key = b.count > 0 ? "count_b" : "count_a";
-        throw ParamError(key, "the disks cover " + number(100 * disks / area) + " % of the " + number(right() - left()) +
-                                  " × " + number(boxHeight) + " box; at most " + number(100 * kMaxAreaFraction) +
+        throw ParamError(key, "the disks cover " + number(100 * disks / area) + " % of the " +
+                                  number(right() - left()) + " × " + number(boxHeight) + " box; at most " +
+                                  number(100 * kMaxAreaFraction) +
                                   " % fits (fewer or smaller disks, or a larger box)");
     }
     for (const auto* sp : {&a, &b})
         if (sp->count > 0 && (sp->diameter >= boxWidth || sp->diameter >= boxHeight))
-            throw ParamError(sp == &a ? "diameter_a" : "diameter_b", "a disk of diameter " + number(sp->diameter) +
-                                                                         " does not fit in the box");
+            throw ParamError(sp == &a ? "diameter_a" : "diameter_b",
+                             "a disk of diameter " + number(sp->diameter) + " does not fit in the box");
 }
 
 } // namespace pl

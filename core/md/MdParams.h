@@ -9,9 +9,9 @@
 namespace pl {
 
 struct MdSpeciesParams {
-    long long count = 0;          // number of disks; 0 disables the species
-    double mass = 1.0;            // [M], typical 1, range [1e-6, 1e6]
-    double diameter = 0.01;       // [L], typical 0.01 (seed), range [1e-6, 1e3]
+    long long count = 0;           // number of disks; 0 disables the species
+    double mass = 1.0;             // [M], typical 1, range [1e-6, 1e6]
+    double diameter = 0.01;        // [L], typical 0.01 (seed), range [1e-6, 1e3]
     std::string color = "#6e87b0"; // drawing colour when colouring by species
 };
 
@@ -34,17 +34,17 @@ struct MdParams {
     double dt = 1e-4;                           // signed time step [T]; negative runs time backwards
     std::string forceMethod = "cell-list";      // "cell-list" or "all-pairs" (the seed's O(N²) loop)
 
-    double gravity = 0.0;       // downward acceleration [L/T²]
-    bool pistonEnabled = false; // a movable vertical wall replacing the right wall
-    double pistonX = 1.0;       // its position [L], must lie inside the box
+    double gravity = 0.0;                // downward acceleration [L/T²]
+    bool pistonEnabled = false;          // a movable vertical wall replacing the right wall
+    double pistonX = 1.0;                // its position [L], must lie inside the box
     std::string wallMode = "reflecting"; // "reflecting" or "thermal" (diffuse walls at wallKT)
     double wallKT = 0.5;                 // thermal wall temperature [M·L²/T²]
 
-    long long maxParticles = 1 << 20;   // cap on disks, enforced by reset and spawning
-    double spawnMaxOverlap = 0.25;      // refuse a spawned disk overlapping another by more than this × d
-    long long histogramBins = 40;       // speed histogram bins
-    double pressureWindow = 1.0;        // wall-pressure averaging window [T]
-    double blowupEnergyFactor = 100.0;  // stop when total energy exceeds this × the reference energy
+    long long maxParticles = 1 << 20;  // cap on disks, enforced by reset and spawning
+    double spawnMaxOverlap = 0.25;     // refuse a spawned disk overlapping another by more than this × d
+    long long histogramBins = 40;      // speed histogram bins
+    double pressureWindow = 1.0;       // wall-pressure averaging window [T]
+    double blowupEnergyFactor = 100.0; // stop when total energy exceeds this × the reference energy
 
     long long totalCount() const { return a.count + b.count; }
     const MdSpeciesParams& species(int s) const { return s == 0 ? a : b; }

@@ -18,7 +18,8 @@ std::string SpawnResult::message() const {
     out << "added " << added << (added == 1 ? " disk" : " disks");
     if (refusedCap > 0) out << "; " << refusedCap << " refused: the particle cap (max_particles) is reached";
     if (refusedOverlap > 0) out << "; " << refusedOverlap << " refused: they would overlap other disks";
-    if (refusedOutside > 0) out << "; " << refusedOutside << " refused: outside the box or inside an obstacle";
+    if (refusedOutside > 0)
+        out << "; " << refusedOutside << " refused: outside the box or inside an obstacle";
     return out.str();
 }
 

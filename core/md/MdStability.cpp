@@ -14,10 +14,14 @@ namespace {
 double stabilityLimit(MdIntegrator integrator) {
     switch (integrator) {
     case MdIntegrator::VelocityVerlet:
-    case MdIntegrator::SymplecticEuler: return 2.0;
-    case MdIntegrator::RungeKutta4: return 2.0 * std::sqrt(2.0);
-    case MdIntegrator::ForestRuth: return 1.5734;
-    case MdIntegrator::ExplicitEuler: return 0.0;
+    case MdIntegrator::SymplecticEuler:
+        return 2.0;
+    case MdIntegrator::RungeKutta4:
+        return 2.0 * std::sqrt(2.0);
+    case MdIntegrator::ForestRuth:
+        return 1.5734;
+    case MdIntegrator::ExplicitEuler:
+        return 0.0;
     }
     return 0.0;
 }
@@ -57,9 +61,11 @@ void MdModel::fail(const std::string& what, const std::string& hint) {
 std::string MdModel::stabilityHint() const {
     double omega = 0.0; // stiffest contact: the smallest reduced mass present
     const bool hasA = params_.a.count > 0, hasB = params_.b.count > 0;
-    if (hasA || !hasB) omega = std::max(omega, md::contactOmega(params_.stiffness, params_.a.mass, params_.a.mass));
+    if (hasA || !hasB)
+        omega = std::max(omega, md::contactOmega(params_.stiffness, params_.a.mass, params_.a.mass));
     if (hasB) omega = std::max(omega, md::contactOmega(params_.stiffness, params_.b.mass, params_.b.mass));
-    if (hasA && hasB) omega = std::max(omega, md::contactOmega(params_.stiffness, params_.a.mass, params_.b.mass));
+    if (hasA && hasB)
+        omega = std::max(omega, md::contactOmega(params_.stiffness, params_.a.mass, params_.b.mass));
     const double wdt = omega * std::abs(params_.dt);
     const double limit = stabilityLimit(integrator_);
     const std::string name = params_.integrator;
@@ -67,10 +73,12 @@ std::string MdModel::stabilityHint() const {
         return "explicit Euler gains energy every step (factor 1 + ω²dt² = " + fixed(1 + wdt * wdt, 4) +
                " per contact step) and is unstable at any dt: use velocity-verlet";
     if (wdt > limit)
-        return "dt·ω = " + fixed(wdt, 2) + " > " + fixed(limit, 2) + ": " + name + " is unstable; use |dt| < " +
-               fixed(limit / omega, 8) + " (about " + fixed(std::acos(-1.0) / wdt, 1) + " steps per contact now)";
+        return "dt·ω = " + fixed(wdt, 2) + " > " + fixed(limit, 2) + ": " + name +
+               " is unstable; use |dt| < " + fixed(limit / omega, 8) + " (about " +
+               fixed(std::acos(-1.0) / wdt, 1) + " steps per contact now)";
     return "dt·ω = " + fixed(wdt, 3) + " is inside the stability limit " + fixed(limit, 2) +
-           "; look for deeply overlapping disks (spawning, random placement with large k) or a fast obstacle, "
+           "; look for deeply overlapping disks (spawning, random placement with large k) or a fast "
+           "obstacle, "
            "or reduce dt";
 }
 
@@ -89,8 +97,8 @@ void MdModel::checkHealth(bool energyCheck) {
     const double bound = params_.blowupEnergyFactor * std::max(referenceEnergy_, std::abs(energyBaseline_)) +
                          (params_.wallMode == "thermal" ? 4.0 * params_.wallKT * state_.size() : 0.0);
     if (e > bound && e > 0)
-        fail("the total energy grew from " + fixed(referenceEnergy_, 6) + " to " + fixed(e, 6) + " (more than " +
-                 fixed(params_.blowupEnergyFactor, 0) + "×)",
+        fail("the total energy grew from " + fixed(referenceEnergy_, 6) + " to " + fixed(e, 6) +
+                 " (more than " + fixed(params_.blowupEnergyFactor, 0) + "×)",
              stabilityHint());
 }
 

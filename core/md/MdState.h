@@ -7,16 +7,16 @@
 namespace pl {
 
 struct MdState {
-    std::vector<double> x, y;   // position [L]
-    std::vector<double> vx, vy; // velocity [L/T]
-    std::vector<double> ax, ay; // acceleration at the current positions [L/T²]
+    std::vector<double> x, y;          // position [L]
+    std::vector<double> vx, vy;        // velocity [L/T]
+    std::vector<double> ax, ay;        // acceleration at the current positions [L/T²]
     std::vector<std::uint8_t> species; // 0 = A, 1 = B
     std::vector<std::uint32_t> id;     // stable identity: random streams and dumps follow it
 
     // Per-particle accumulators written in gather form (each loop iteration writes only particle i),
     // summed serially so that totals do not depend on the thread count.
-    std::vector<double> potential;   // ½ Σ_j U(r_ij) at the last force evaluation [energy]
-    std::vector<double> virial;      // ¼ Σ_j r_ij·f_ij: summed over i gives ½ Σ_{i<j} r_ij·f_ij [energy]
+    std::vector<double> potential; // ½ Σ_j U(r_ij) at the last force evaluation [energy]
+    std::vector<double> virial;    // ¼ Σ_j r_ij·f_ij: summed over i gives ½ Σ_{i<j} r_ij·f_ij [energy]
     std::vector<double> wallImpulse; // normal momentum given to the walls since the last sample [M·L/T]
     std::vector<std::uint32_t> contactsBegun; // contacts entered since the last sample (each pair twice)
 

@@ -17,7 +17,8 @@ Result cli(const QStringList& args) {
     QProcess p;
     p.start(PARTICLELAB_CLI, args);
     p.waitForFinished(120000);
-    return {p.exitCode(), QString::fromUtf8(p.readAllStandardOutput()), QString::fromUtf8(p.readAllStandardError())};
+    return {p.exitCode(), QString::fromUtf8(p.readAllStandardOutput()),
+            QString::fromUtf8(p.readAllStandardError())};
 }
 
 QStringList readLines(const QString& path) {
@@ -39,15 +40,16 @@ private slots:
 
     void runWritesEveryFile() {
         QTemporaryDir dir;
-        const QString series = dir.filePath("s.csv"), hist = dir.filePath("h.csv"), init = dir.filePath("i.csv"),
-                      fin = dir.filePath("f.csv");
-        const auto r = cli({"run", "gas-seed", "--steps", "200", "--every", "50", "--threads", "2", "--out", series,
-                            "--histogram", hist, "--dump-initial", init, "--dump-final", fin});
+        const QString series = dir.filePath("s.csv"), hist = dir.filePath("h.csv"),
+                      init = dir.filePath("i.csv"), fin = dir.filePath("f.csv");
+        const auto r = cli({"run", "gas-seed", "--steps", "200", "--every", "50", "--threads", "2", "--out",
+                            series, "--histogram", hist, "--dump-initial", init, "--dump-final", fin});
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
         const QStringList rows = readLines(series);
         QCOMPARE(rows.size(), 1 + 5); // header, steps 0, 50, 100, 150, 200
         const QStringList header = rows[0].split(',');
-        for (const char* column : {"step", "time", "kinetic", "potential", "total", "kT", "pressure_virial", "pressure_wall"})
+        for (const char* column :
+             {"step", "time", "kinetic", "potential", "total", "kT", "pressure_virial", "pressure_wall"})
             QVERIFY2(header.contains(column), column);
         QCOMPARE(rows.last().split(',')[0], QString("200"));
         QCOMPARE(readLines(init).size(), 4097);
@@ -61,9 +63,14 @@ private slots:
     void setAndSeedChangeTheRun() {
         QTemporaryDir dir;
         const QString a = dir.filePath("a.csv"), b = dir.filePath("b.csv");
-        QCOMPARE(cli({"run", "gas-classroom", "--steps", "0", "--set", "count_a=100", "--seed", "5", "--dump-final", a}).exitCode, 0);
+        QCOMPARE(cli({"run", "gas-classroom", "--steps", "0", "--set", "count_a=100", "--seed", "5",
+                      "--dump-final", a})
+                     .exitCode,
+                 0);
         QCOMPARE(cli({"run", "gas-classroom", "--steps", "0", "--set", "count_a=100", "--seed", "6", "--set",
-                      "init_placement=random", "--dump-final", b}).exitCode, 0);
+                      "init_placement=random", "--dump-final", b})
+                     .exitCode,
+                 0);
         QCOMPARE(readLines(a).size(), 101);
         QVERIFY(readLines(a)[1] != readLines(b)[1]);
     }
@@ -82,14 +89,22 @@ private slots:
         QTest::addColumn<QStringList>("args");
         QTest::addColumn<int>("exitCode");
         QTest::addColumn<QString>("message");
-        QTest::newRow("unknown preset") << QStringList{"run", "no-such-preset"} << 2 << "neither a built-in preset";
-        QTest::newRow("unknown key") << QStringList{"run", "gas-seed", "--set", "stifness=3"} << 2 << "unknown parameter 'stifness'";
-        QTest::newRow("out of range") << QStringList{"run", "gas-seed", "--set", "dt=5"} << 2 << "[-1, 1] except 0 T";
-        QTest::newRow("nan") << QStringList{"run", "gas-seed", "--set", "stiffness=nan"} << 2 << "must be finite";
-        QTest::newRow("wrong type") << QStringList{"run", "gas-seed", "--set", "count_a=many"} << 2 << "must be an integer";
+        QTest::newRow("unknown preset")
+            << QStringList{"run", "no-such-preset"} << 2 << "neither a built-in preset";
+        QTest::newRow("unknown key") << QStringList{"run", "gas-seed", "--set", "stifness=3"} << 2
+                                     << "unknown parameter 'stifness'";
+        QTest::newRow("out of range")
+            << QStringList{"run", "gas-seed", "--set", "dt=5"} << 2 << "[-1, 1] except 0 T";
+        QTest::newRow("nan") << QStringList{"run", "gas-seed", "--set", "stiffness=nan"} << 2
+                             << "must be finite";
+        QTest::newRow("wrong type") << QStringList{"run", "gas-seed", "--set", "count_a=many"} << 2
+                                    << "must be an integer";
         QTest::newRow("not key=value") << QStringList{"run", "gas-seed", "--set", "dt"} << 2 << "key=value";
-        QTest::newRow("too many") << QStringList{"run", "gas-seed", "--set", "count_a=2000000"} << 2 << "exceeds max_particles";
-        QTest::newRow("unwritable") << QStringList{"run", "gas-seed", "--steps", "1", "--out", "/nonexistent/s.csv"} << 4 << "/nonexistent/s.csv";
+        QTest::newRow("too many") << QStringList{"run", "gas-seed", "--set", "count_a=2000000"} << 2
+                                  << "exceeds max_particles";
+        QTest::newRow("unwritable") << QStringList{"run", "gas-seed", "--steps",
+                                                   "1",   "--out",    "/nonexistent/s.csv"}
+                                    << 4 << "/nonexistent/s.csv";
     }
     void badInputsNameTheProblem() {
         QFETCH(QStringList, args);
@@ -103,7 +118,8 @@ private slots:
     void blowUpExitsWithTheModelsMessage() {
         QTemporaryDir dir;
         const QString series = dir.filePath("s.csv");
-        const auto r = cli({"run", "gas-classroom", "--steps", "3000", "--set", "dt=0.0056", "--out", series});
+        const auto r =
+            cli({"run", "gas-classroom", "--steps", "3000", "--set", "dt=0.0056", "--out", series});
         QCOMPARE(r.exitCode, 3);
         QVERIFY2(r.err.contains("dt·ω = 2.50 > 2.00"), qPrintable(r.err));
         QVERIFY(readLines(series).size() > 1); // what was measured before the failure is kept
@@ -118,7 +134,8 @@ private slots:
         QCOMPARE(json["threads"].toInt(), 1);
         QCOMPARE(json["backend"].toString(), QString("cpu"));
         QVERIFY(json["p_steps_per_s"].toDouble() > 0);
-        QVERIFY(std::abs(json["p_steps_per_s"].toDouble() - 2500.0 * 50 / json["seconds"].toDouble()) < 1e-6 * json["p_steps_per_s"].toDouble());
+        QVERIFY(std::abs(json["p_steps_per_s"].toDouble() - 2500.0 * 50 / json["seconds"].toDouble()) <
+                1e-6 * json["p_steps_per_s"].toDouble());
     }
 };
 

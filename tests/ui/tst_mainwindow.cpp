@@ -53,7 +53,8 @@ private slots:
         std::map<std::uint32_t, double> startX; // large gases are kept in spatial order: match by id
         for (std::size_t i = 0; i < start.size(); ++i) startX[start.id[i]] = start.x[i];
         double worst = 0;
-        for (std::size_t i = 0; i < back.size(); ++i) worst = std::max(worst, std::abs(back.x[i] - startX.at(back.id[i])));
+        for (std::size_t i = 0; i < back.size(); ++i)
+            worst = std::max(worst, std::abs(back.x[i] - startX.at(back.id[i])));
         QVERIFY(worst < 1e-12);
         QVERIFY(std::abs(controller->model()->time()) < 1e-12);
     }

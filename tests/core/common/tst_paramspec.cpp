@@ -37,7 +37,8 @@ std::vector<ParamField<Sample>> sampleFields() {
     mode.key = "mode";
     mode.kind = ParamKind::Choice;
     mode.choices = {"a", "b"};
-    return {bindReal(&Sample::speed, speed), bindInteger(&Sample::count, count), bindText(&Sample::mode, mode)};
+    return {bindReal(&Sample::speed, speed), bindInteger(&Sample::count, count),
+            bindText(&Sample::mode, mode)};
 }
 } // namespace
 
@@ -54,12 +55,16 @@ private slots:
         QVERIFY(m.find("[-1, 1]") != std::string::npos);
     }
     void rejectsNonFinite() {
-        QVERIFY(checkValue(realSpec(), std::numeric_limits<double>::quiet_NaN()).find("finite") != std::string::npos);
-        QVERIFY(checkValue(realSpec(), std::numeric_limits<double>::infinity()).find("finite") != std::string::npos);
+        QVERIFY(checkValue(realSpec(), std::numeric_limits<double>::quiet_NaN()).find("finite") !=
+                std::string::npos);
+        QVERIFY(checkValue(realSpec(), std::numeric_limits<double>::infinity()).find("finite") !=
+                std::string::npos);
         // "nan" typed on the command line parses, then fails the check.
         QVERIFY(!checkValue(realSpec(), parseValue(realSpec(), "nan")).empty());
     }
-    void rejectsZeroWhenNonZero() { QVERIFY(checkValue(realSpec(), 0.0).find("must not be 0") != std::string::npos); }
+    void rejectsZeroWhenNonZero() {
+        QVERIFY(checkValue(realSpec(), 0.0).find("must not be 0") != std::string::npos);
+    }
     void rejectsWrongType() {
         QVERIFY(checkValue(realSpec(), std::string("fast")).find("must be a number") != std::string::npos);
         QVERIFY_THROWS_EXCEPTION(ParamError, parseValue(realSpec(), "0.1x"));

@@ -11,7 +11,8 @@ class TestPhilox : public QObject {
 private slots:
     void knownAnswers() {
         // Reference vectors of Salmon et al. (Random123 kat_vectors).
-        QCOMPARE(philox4x32({0, 0, 0, 0}, {0, 0}), (Philox4x32{0x6627e8d5u, 0xe169c58du, 0xbc57ac4cu, 0x9b00dbd8u}));
+        QCOMPARE(philox4x32({0, 0, 0, 0}, {0, 0}),
+                 (Philox4x32{0x6627e8d5u, 0xe169c58du, 0xbc57ac4cu, 0x9b00dbd8u}));
         QCOMPARE(philox4x32({0xffffffffu, 0xffffffffu, 0xffffffffu, 0xffffffffu}, {0xffffffffu, 0xffffffffu}),
                  (Philox4x32{0x408f276du, 0x41c83b0eu, 0xa20bc7c6u, 0x6d5451fdu}));
         QCOMPARE(philox4x32({0x243f6a88u, 0x85a308d3u, 0x13198a2eu, 0x03707344u}, {0xa4093822u, 0x299f31d0u}),

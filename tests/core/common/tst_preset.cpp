@@ -13,7 +13,8 @@ using namespace pl;
 namespace {
 
 std::string gasPreset(const std::string& params, const std::string& extra = "") {
-    return R"({"schema": 1, "model": "gas", "name": "t", "seed": 3, "params": {)" + params + "}" + extra + "}";
+    return R"({"schema": 1, "model": "gas", "name": "t", "seed": 3, "params": {)" + params + "}" + extra +
+           "}";
 }
 
 // The PresetError message of parsing and instantiating text; empty when it was accepted.
@@ -40,7 +41,8 @@ private slots:
             auto model = instantiate(p.preset);
             QVERIFY(model->particleCount() > 0);
         }
-        for (const char* required : {"gas-seed", "gas-classroom", "gas-mixture"}) QVERIFY(names.contains(required));
+        for (const char* required : {"gas-seed", "gas-classroom", "gas-mixture"})
+            QVERIFY(names.contains(required));
     }
 
     void seedPresetIsTheSeed() {
@@ -55,7 +57,8 @@ private slots:
         QCOMPARE(md.right(), 1.0);
         QCOMPARE(md.integrator, std::string("velocity-verlet"));
         const auto& s = static_cast<const MdModel&>(*model).state();
-        for (std::size_t i = 0; i < s.size(); ++i) QVERIFY(std::abs(std::hypot(s.vx[i], s.vy[i]) - 1.0) < 1e-12);
+        for (std::size_t i = 0; i < s.size(); ++i)
+            QVERIFY(std::abs(std::hypot(s.vx[i], s.vy[i]) - 1.0) < 1e-12);
     }
 
     void roundTripThroughFile() {
@@ -65,7 +68,8 @@ private slots:
             p.obstacles.push_back({Obstacle::Shape::Disc, 0.1, -0.2, 0.15});
             p.obstacles.push_back({Obstacle::Shape::Box, -0.3, 0.4, 0.1, 0.2, 0.05});
             const auto* specs = specsForModel(p.model);
-            const std::string path = dir.filePath(QString::fromStdString(builtin.name + ".json")).toStdString();
+            const std::string path =
+                dir.filePath(QString::fromStdString(builtin.name + ".json")).toStdString();
             writePresetFile(path, p, *specs);
             const Preset back = readPresetFile(path, specsForModel);
             QCOMPARE(back.model, p.model);
@@ -78,10 +82,12 @@ private slots:
             QVERIFY(a->params() == b->params());
             QCOMPARE(back.params.size(), specs->size());
             // A second serialisation is byte-identical: the format is stable.
-            QCOMPARE(serializePreset(back, *specs), serializePreset(readPresetFile(path, specsForModel), *specs));
+            QCOMPARE(serializePreset(back, *specs),
+                     serializePreset(readPresetFile(path, specsForModel), *specs));
         }
         // Atomic write leaves no temporary file behind.
-        QCOMPARE(QDir(dir.path()).entryList(QDir::Files).size(), static_cast<qsizetype>(builtinPresets().size()));
+        QCOMPARE(QDir(dir.path()).entryList(QDir::Files).size(),
+                 static_cast<qsizetype>(builtinPresets().size()));
     }
 
     void modelToPresetRoundTrip() {
@@ -138,7 +144,8 @@ private slots:
 
     void tooManyParticles() {
         std::string key;
-        QVERIFY(errorOf(gasPreset(R"("count_a": 5000, "max_particles": 4000)"), &key).contains("exceeds max_particles"));
+        QVERIFY(errorOf(gasPreset(R"("count_a": 5000, "max_particles": 4000)"), &key)
+                    .contains("exceeds max_particles"));
         QCOMPARE(key, std::string("params.count_a"));
         const QString fit = errorOf(gasPreset(R"("count_a": 40000, "diameter_a": 0.02)"), &key);
         QVERIFY2(fit.contains("% fits"), qPrintable(fit));
@@ -157,10 +164,12 @@ private slots:
 
     void badObstacles() {
         std::string key;
-        QVERIFY(errorOf(gasPreset("", R"(, "obstacles": [{"shape": "disc", "x": 0, "y": 0, "radius": -1}])"), &key)
+        QVERIFY(errorOf(gasPreset("", R"(, "obstacles": [{"shape": "disc", "x": 0, "y": 0, "radius": -1}])"),
+                        &key)
                     .contains("radius"));
         QCOMPARE(key, std::string("obstacles[0].radius"));
-        QVERIFY(errorOf(gasPreset("", R"(, "obstacles": [{"shape": "star", "x": 0, "y": 0}])")).contains("\"star\""));
+        QVERIFY(errorOf(gasPreset("", R"(, "obstacles": [{"shape": "star", "x": 0, "y": 0}])"))
+                    .contains("\"star\""));
         QVERIFY(errorOf(gasPreset("", R"(, "obstacles": [{"shape": "disc", "x": 9, "y": 0, "radius": 0.1}])"))
                     .contains("outside the box"));
     }

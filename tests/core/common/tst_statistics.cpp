@@ -19,7 +19,8 @@ private slots:
         // Mean 1.25331 = √(π/2) by quadrature of v f(v).
         double mean = 0, norm = 0;
         const double dv = 1e-4;
-        for (double v = 0.5 * dv; v < 12; v += dv) mean += v * rayleighPdf(v, 2.0, 2.0) * dv, norm += rayleighPdf(v, 2.0, 2.0) * dv;
+        for (double v = 0.5 * dv; v < 12; v += dv)
+            mean += v * rayleighPdf(v, 2.0, 2.0) * dv, norm += rayleighPdf(v, 2.0, 2.0) * dv;
         QVERIFY(std::abs(norm - 1) < 1e-6);
         QVERIFY(std::abs(mean - 1.25331) < 1e-5);
     }

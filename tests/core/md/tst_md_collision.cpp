@@ -17,11 +17,18 @@ struct CollisionResult {
 };
 
 // Disks of masses m1, m2 (diameter d) approach head-on along x with velocities u1, u2.
-CollisionResult collide(double m1, double m2, double d, double k, double u1, double u2, double dt, double duration,
-                        double impactOffset = 0.0) {
-    MdModel model = test::makeGas({{"box_width", 10.0}, {"box_height", 10.0}, {"count_a", 1.0}, {"count_b", 1.0},
-                                   {"mass_a", m1}, {"mass_b", m2}, {"diameter_a", d}, {"diameter_b", d},
-                                   {"stiffness", k}, {"dt", dt}});
+CollisionResult collide(double m1, double m2, double d, double k, double u1, double u2, double dt,
+                        double duration, double impactOffset = 0.0) {
+    MdModel model = test::makeGas({{"box_width", 10.0},
+                                   {"box_height", 10.0},
+                                   {"count_a", 1.0},
+                                   {"count_b", 1.0},
+                                   {"mass_a", m1},
+                                   {"mass_b", m2},
+                                   {"diameter_a", d},
+                                   {"diameter_b", d},
+                                   {"stiffness", k},
+                                   {"dt", dt}});
     model.placeParticles({{-1.5 * d, 0.0, u1, 0.0, 0}, {1.5 * d, impactOffset, u2, 0.0, 1}});
     const auto p0 = test::totalMomentum(model);
     double firstContact = -1, lastContact = -1, momentumError = 0;
@@ -36,8 +43,8 @@ CollisionResult collide(double m1, double m2, double d, double k, double u1, dou
         momentumError = std::max(momentumError, std::hypot(p.first - p0.first, p.second - p0.second));
     }
     const auto& st = model.state();
-    return {lastContact - firstContact + dt, st.vx[0],  st.vx[1], std::hypot(st.vx[0], st.vy[0]),
-            std::hypot(st.vx[1], st.vy[1]), st.x[0], st.x[1], momentumError};
+    return {lastContact - firstContact + dt, st.vx[0], st.vx[1], std::hypot(st.vx[0], st.vy[0]),
+            std::hypot(st.vx[1], st.vy[1]),  st.x[0],  st.x[1],  momentumError};
 }
 
 } // namespace
@@ -51,7 +58,8 @@ private slots:
         const double dt = tc / 2000;
         const auto r = collide(m, m, d, k, 1.0, -1.0, dt, 0.3);
         // The contact is resolved to one step.
-        QVERIFY2(std::abs(r.contactTime - tc) <= 1.5 * dt, qPrintable(QString("%1 vs %2").arg(r.contactTime).arg(tc)));
+        QVERIFY2(std::abs(r.contactTime - tc) <= 1.5 * dt,
+                 qPrintable(QString("%1 vs %2").arg(r.contactTime).arg(tc)));
         QVERIFY(std::abs(r.v1 + 1.0) < 1e-6);
         QVERIFY(std::abs(r.v2 - 1.0) < 1e-6);
     }

@@ -19,8 +19,13 @@ private slots:
     void cellListEqualsAllPairs() {
         QFETCH(double, countB);
         QFETCH(QString, placement);
-        ParamValues values{{"count_a", 1500.0}, {"count_b", countB}, {"diameter_a", 0.03}, {"diameter_b", 0.05},
-                           {"box_width", 2.0}, {"box_height", 1.5}, {"init_placement", placement.toStdString()}};
+        ParamValues values{{"count_a", 1500.0},
+                           {"count_b", countB},
+                           {"diameter_a", 0.03},
+                           {"diameter_b", 0.05},
+                           {"box_width", 2.0},
+                           {"box_height", 1.5},
+                           {"init_placement", placement.toStdString()}};
         MdModel cells = test::makeGas(values, 17);
         values["force_method"] = std::string("all-pairs");
         MdModel pairs = test::makeGas(values, 17);
@@ -59,8 +64,11 @@ private slots:
     void momentumConservedAwayFromWalls() {
         // A cloud in the middle of a large box: in 200 steps no disk reaches a wall, so only pair
         // forces act and the total momentum is conserved to round-off.
-        MdModel model = test::makeGas({{"count_a", 400.0}, {"box_width", 20.0}, {"box_height", 20.0},
-                                       {"diameter_a", 0.05}, {"init_velocity", std::string("maxwell-boltzmann")}});
+        MdModel model = test::makeGas({{"count_a", 400.0},
+                                       {"box_width", 20.0},
+                                       {"box_height", 20.0},
+                                       {"diameter_a", 0.05},
+                                       {"init_velocity", std::string("maxwell-boltzmann")}});
         std::vector<MdParticle> cloud;
         for (std::size_t i = 0; i < model.state().size(); ++i)
             cloud.push_back({model.state().x[i] * 0.05, model.state().y[i] * 0.05, model.state().vx[i],

@@ -15,8 +15,13 @@ constexpr double kStiffness = 1000.0;
 constexpr double kDiameter = 0.1;
 
 MdModel clusterModel(const std::string& integrator, double dt) {
-    MdModel model = test::makeGas({{"box_width", 4.0}, {"box_height", 4.0}, {"count_a", 4.0}, {"diameter_a", kDiameter},
-                                   {"stiffness", kStiffness}, {"integrator", integrator}, {"dt", dt}});
+    MdModel model = test::makeGas({{"box_width", 4.0},
+                                   {"box_height", 4.0},
+                                   {"count_a", 4.0},
+                                   {"diameter_a", kDiameter},
+                                   {"stiffness", kStiffness},
+                                   {"integrator", integrator},
+                                   {"dt", dt}});
     // Four mutually overlapping disks (all six pairs closer than d), moving slowly: over the horizon no
     // contact begins or ends, so the force is smooth along the trajectory.
     model.placeParticles({{0.00, 0.00, 0.30, 0.10, 0},
@@ -49,8 +54,13 @@ double maxEnergyError(const std::string& integrator, double horizon, int steps) 
 // Two disks overlapping head-on at rest, released from the turning point r = d/2: until they separate
 // (a quarter period) the relative coordinate is an exact harmonic oscillator.
 MdModel headOnContact(const std::string& integrator, double dt) {
-    MdModel model = test::makeGas({{"box_width", 4.0}, {"box_height", 4.0}, {"count_a", 2.0}, {"diameter_a", kDiameter},
-                                   {"stiffness", kStiffness}, {"integrator", integrator}, {"dt", dt}});
+    MdModel model = test::makeGas({{"box_width", 4.0},
+                                   {"box_height", 4.0},
+                                   {"count_a", 2.0},
+                                   {"diameter_a", kDiameter},
+                                   {"stiffness", kStiffness},
+                                   {"integrator", integrator},
+                                   {"dt", dt}});
     model.placeParticles({{-kDiameter / 4, 0.0, 0.0, 0.0, 0}, {kDiameter / 4, 0.0, 0.0, 0.0, 0}});
     return model;
 }
@@ -81,8 +91,10 @@ private slots:
             errors.push_back(e);
         }
         const double order = fitPowerLaw(dts, errors).exponent;
-        QVERIFY2(std::abs(order - expectedOrder) < 0.25,
-                 qPrintable(QString("%1: measured order %2, expected %3").arg(integrator).arg(order).arg(expectedOrder)));
+        QVERIFY2(
+            std::abs(order - expectedOrder) < 0.25,
+            qPrintable(
+                QString("%1: measured order %2, expected %3").arg(integrator).arg(order).arg(expectedOrder)));
     }
 
     void explicitEulerGainsEnergyExactly() {

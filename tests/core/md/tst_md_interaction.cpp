@@ -64,9 +64,14 @@ private slots:
     void pistonCompressionHeatsTheGas() {
         // Quasi-static compression of a dilute 2D gas (γ = 2): kT · A is constant, so halving the area
         // doubles kT. The piston moves at 0.03, much slower than the disks (≈ 1).
-        MdModel model = test::makeGas({{"count_a", 600.0}, {"diameter_a", 0.02}, {"stiffness", 1e5}, {"dt", 5e-4},
-                                       {"init_placement", std::string("lattice")}, {"piston_enabled", true},
-                                       {"init_velocity", std::string("maxwell-boltzmann")}, {"init_kT", 0.5}});
+        MdModel model = test::makeGas({{"count_a", 600.0},
+                                       {"diameter_a", 0.02},
+                                       {"stiffness", 1e5},
+                                       {"dt", 5e-4},
+                                       {"init_placement", std::string("lattice")},
+                                       {"piston_enabled", true},
+                                       {"init_velocity", std::string("maxwell-boltzmann")},
+                                       {"init_kT", 0.5}});
         const double kT0 = model.observe().kT;
         const double speed = 0.03, dt = 5e-4;
         while (model.parameters().pistonX > 0.0) {

@@ -9,6 +9,18 @@ using namespace pl;
 
 namespace {
 
+// Hard-ish disks (20 steps per contact) that hit the walls and, if given, obstacles.
+MdModel hardDisks(std::vector<Obstacle> obstacles = {}) {
+    return test::makeGas({{"count_a", 300.0},
+                          {"box_width", 0.8},
+                          {"box_height", 0.8},
+                          {"diameter_a", 0.02},
+                          {"stiffness", 1e5},
+                          {"dt", 3.5e-4},
+                          {"init_placement", std::string("lattice")}},
+                         3, std::move(obstacles));
+}
+
 double returnError(MdModel& model, int steps) {
     const MdState start = model.state();
     const double dt = model.parameters().dt;
@@ -39,10 +51,7 @@ private slots:
         // Hard-ish disks hitting walls and a disc obstacle: 2.4 collisions per disk in 300 steps. Each
         // collision amplifies a perturbation by about free path / diameter ≈ 9 (measured: 1.6e-15 after
         // 300 steps, 5e-9 after 1000), so 1e-16 grows to ~1e-15; the bound 1e-13 leaves a factor 60.
-        MdModel model = test::makeGas({{"count_a", 300.0}, {"box_width", 0.8}, {"box_height", 0.8},
-                                       {"diameter_a", 0.02}, {"stiffness", 1e5}, {"dt", 3.5e-4},
-                                       {"init_placement", std::string("lattice")}},
-                                      3, {{Obstacle::Shape::Disc, 0.1, 0.1, 0.08}});
+        MdModel model = hardDisks({{Obstacle::Shape::Disc, 0.1, 0.1, 0.08}});
         const double error = returnError(model, 300);
         QVERIFY2(error < 1e-13, qPrintable(QString::number(error)));
     }
@@ -52,10 +61,7 @@ private slots:
         // measured 6e-17 after 100 steps, 1e-5 after 1500), so a return bound is a statement about the
         // horizon, not about the integrator.
         auto run = [](int steps) {
-            MdModel model = test::makeGas({{"count_a", 300.0}, {"box_width", 0.8}, {"box_height", 0.8},
-                                           {"diameter_a", 0.02}, {"stiffness", 1e5}, {"dt", 3.5e-4},
-                                           {"init_placement", std::string("lattice")}},
-                                          3);
+            MdModel model = hardDisks();
             return returnError(model, steps);
         };
         const double shortRun = run(100), longRun = run(1500);

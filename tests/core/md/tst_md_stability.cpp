@@ -57,7 +57,8 @@ private slots:
 
     void nonFiniteStateIsCaught() {
         MdModel model = classroomWith({});
-        model.placeParticles({{0.0, 0.0, std::numeric_limits<double>::quiet_NaN(), 0.0, 0}, {0.5, 0.5, 0.0, 0.0, 0}});
+        model.placeParticles(
+            {{0.0, 0.0, std::numeric_limits<double>::quiet_NaN(), 0.0, 0}, {0.5, 0.5, 0.0, 0.0, 0}});
         model.step();
         QVERIFY(model.failure());
         QVERIFY(model.failure()->what.find("NaN") != std::string::npos);

@@ -35,11 +35,13 @@ private slots:
             run(model, 300);
             const auto o = model.observe();
             const auto& s = model.state();
-            for (std::size_t i = 0; i < s.size(); ++i) scaled.push_back(std::hypot(s.vx[i], s.vy[i]) / std::sqrt(o.kT));
+            for (std::size_t i = 0; i < s.size(); ++i)
+                scaled.push_back(std::hypot(s.vx[i], s.vy[i]) / std::sqrt(o.kT));
         }
         const double n = static_cast<double>(scaled.size());
         const double d = ksDistance(scaled, [](double v) { return rayleighCdf(v, 1.0, 1.0); });
-        QVERIFY2(d < ksCritical(n, 0.01), qPrintable(QString("D = %1, critical %2").arg(d).arg(ksCritical(n, 0.01))));
+        QVERIFY2(d < ksCritical(n, 0.01),
+                 qPrintable(QString("D = %1, critical %2").arg(d).arg(ksCritical(n, 0.01))));
         // Moments of the Rayleigh distribution: <v⁴>/<v²>² = 2 in 2D.
         double m2 = 0, m4 = 0;
         for (double v : scaled) m2 += v * v, m4 += v * v * v * v;
@@ -69,8 +71,9 @@ private slots:
         // The dense gas is far from ideal (area fraction 0.2), so agreement is a real check.
         QVERIFY(virial > 1.2 * ideal);
         // ~40 000 wall hits: the wall estimate carries ~1 % noise; 3 % is the bound.
-        QVERIFY2(std::abs(o.pressureWall - virial) < 0.03 * virial,
-                 qPrintable(QString("wall %1, virial %2, ideal %3").arg(o.pressureWall).arg(virial).arg(ideal)));
+        QVERIFY2(
+            std::abs(o.pressureWall - virial) < 0.03 * virial,
+            qPrintable(QString("wall %1, virial %2, ideal %3").arg(o.pressureWall).arg(virial).arg(ideal)));
     }
 
     void speciesShareEnergyEqually() {
@@ -86,15 +89,20 @@ private slots:
             a += o.kTSpecies[0];
             b += o.kTSpecies[1];
         }
-        QVERIFY2(std::abs(a - b) < 0.06 * (a + b) / 2, qPrintable(QString("kT_a %1, kT_b %2").arg(a / 20).arg(b / 20)));
+        QVERIFY2(std::abs(a - b) < 0.06 * (a + b) / 2,
+                 qPrintable(QString("kT_a %1, kT_b %2").arg(a / 20).arg(b / 20)));
     }
 
     void thermalWallsSetTheTemperature() {
         // A near-ideal gas (tiny disks) between walls at kT = 1.2: a disk that has left a thermal wall
         // carries the wall's distribution, so kT → 1.2. Canonical fluctuations of kT are 1/√N ≈ 2 % per
         // snapshot; 10 snapshots half a wall-crossing time apart average them to ≈ 0.7 %.
-        MdModel model = test::makeGas({{"count_a", 2000.0}, {"box_width", 1.0}, {"box_height", 1.0},
-                                       {"diameter_a", 0.001}, {"dt", 1e-3}, {"wall_mode", std::string("thermal")},
+        MdModel model = test::makeGas({{"count_a", 2000.0},
+                                       {"box_width", 1.0},
+                                       {"box_height", 1.0},
+                                       {"diameter_a", 0.001},
+                                       {"dt", 1e-3},
+                                       {"wall_mode", std::string("thermal")},
                                        {"wall_kT", 1.2}});
         QVERIFY(std::abs(model.observe().kT - 0.5) < 1e-12);
         run(model, 5000); // t = 5: every disk has met the walls several times
@@ -111,9 +119,15 @@ private slots:
         // n · 2d · <v_rel> · χ(φ) with <v_rel> = √(π kT/m) and the 2D contact value
         // χ = (1 − 7φ/16) / (1 − φ)² (Henderson 1975).
         const double count = 1000, side = 2.5, d = 0.02;
-        MdModel model = test::makeGas({{"count_a", count}, {"box_width", side}, {"box_height", side}, {"diameter_a", d},
-                                       {"stiffness", 1e5}, {"dt", 3.5e-4}, {"init_placement", std::string("lattice")},
-                                       {"init_velocity", std::string("maxwell-boltzmann")}, {"init_kT", 0.5}});
+        MdModel model = test::makeGas({{"count_a", count},
+                                       {"box_width", side},
+                                       {"box_height", side},
+                                       {"diameter_a", d},
+                                       {"stiffness", 1e5},
+                                       {"dt", 3.5e-4},
+                                       {"init_placement", std::string("lattice")},
+                                       {"init_velocity", std::string("maxwell-boltzmann")},
+                                       {"init_kT", 0.5}});
         run(model, 1000);
         (void)model.observe();
         run(model, 6000);
@@ -123,7 +137,8 @@ private slots:
         const double chi = (1 - 7 * phi / 16) / ((1 - phi) * (1 - phi));
         const double theory = n * 2 * d * std::sqrt(std::numbers::pi * o.kT) * chi;
         const double measured = 2 * o.collisionRate / count;
-        QVERIFY2(std::abs(measured / theory - 1) < 0.06, qPrintable(QString("%1 vs %2").arg(measured).arg(theory)));
+        QVERIFY2(std::abs(measured / theory - 1) < 0.06,
+                 qPrintable(QString("%1 vs %2").arg(measured).arg(theory)));
     }
 };
 
