@@ -14,6 +14,4 @@ struct EmbeddedFile {
 // Defined in a source generated at build time from resources/ (see resources/EmbedFiles.cmake).
 std::span<const EmbeddedFile> embeddedFiles();
 
-const EmbeddedFile* findEmbeddedFile(std::string_view path);
-
 } // namespace pl

@@ -28,14 +28,6 @@ void Histogram::clear() {
     underflow_ = overflow_ = 0.0;
 }
 
-void Histogram::merge(const Histogram& other) {
-    if (other.bins() != bins() || other.lo_ != lo_ || other.hi_ != hi_)
-        throw std::invalid_argument("histograms with different binning cannot be merged");
-    for (std::size_t i = 0; i < counts_.size(); ++i) counts_[i] += other.counts_[i];
-    underflow_ += other.underflow_;
-    overflow_ += other.overflow_;
-}
-
 double Histogram::total() const {
     double sum = underflow_ + overflow_;
     for (double c : counts_) sum += c;

@@ -13,8 +13,6 @@ public:
 
     void add(double value, double weight = 1.0);
     void clear();
-    // Adds another histogram with the same binning (time averaging).
-    void merge(const Histogram& other);
 
     std::size_t bins() const { return counts_.size(); }
     double lo() const { return lo_; }

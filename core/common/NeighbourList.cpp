@@ -91,7 +91,6 @@ void NeighbourList::build(const double* x, const double* y, std::size_t count, d
     builtX_.assign(x, x + count);
     builtY_.assign(y, y + count);
     valid_ = true;
-    ++builds_;
 }
 
 void NeighbourList::permute(const std::vector<std::uint32_t>& newToOld) {

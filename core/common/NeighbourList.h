@@ -35,10 +35,8 @@ public:
     const std::uint32_t* offsets() const { return offsets_.data(); }
     const std::uint32_t* entries() const { return entries_.data(); }
     std::uint8_t* payload() { return payload_.data(); }
-    std::uint32_t count(std::size_t i) const { return offsets_[i + 1] - offsets_[i]; }
     const double* builtX() const { return builtX_.data(); }
     const double* builtY() const { return builtY_.data(); }
-    long long builds() const { return builds_; }
 
 private:
     CellList cells_;
@@ -49,7 +47,6 @@ private:
     std::vector<double> builtX_, builtY_;
     double skin_ = 0.0;
     bool valid_ = false;
-    long long builds_ = 0;
 };
 
 } // namespace pl

@@ -8,21 +8,6 @@ namespace pl {
 
 TimeSeries::TimeSeries(std::vector<std::string> columns) : columns_(std::move(columns)) {}
 
-int TimeSeries::columnIndex(const std::string& name) const {
-    for (std::size_t i = 0; i < columns_.size(); ++i)
-        if (columns_[i] == name) return static_cast<int>(i);
-    return -1;
-}
-
-std::vector<double> TimeSeries::column(const std::string& name) const {
-    const int c = columnIndex(name);
-    if (c < 0) throw std::out_of_range("no column '" + name + "'");
-    std::vector<double> values;
-    values.reserve(rows_.size());
-    for (const auto& r : rows_) values.push_back(r[static_cast<std::size_t>(c)]);
-    return values;
-}
-
 void TimeSeries::append(std::vector<double> row) {
     if (row.size() != columns_.size())
         throw std::invalid_argument("row has " + std::to_string(row.size()) + " values for " +

@@ -15,9 +15,6 @@ public:
     const std::vector<std::string>& columns() const { return columns_; }
     std::size_t rows() const { return rows_.size(); }
     const std::vector<double>& row(std::size_t i) const { return rows_[i]; }
-    // Column index by name, or -1.
-    int columnIndex(const std::string& name) const;
-    std::vector<double> column(const std::string& name) const;
 
     // Appends one row; its length must match the column count.
     void append(std::vector<double> row);

@@ -30,8 +30,6 @@ void MdModel::buildInitialState() {
         placeRandom(params_.a.count, params_.b.count, 1);
     }
     assignVelocities();
-    xPrev_.assign(state_.x.begin(), state_.x.end());
-    yPrev_.assign(state_.y.begin(), state_.y.end());
 }
 
 bool MdModel::insideSpace(double x, double y, double radius) const {

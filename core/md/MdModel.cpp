@@ -140,14 +140,11 @@ void MdModel::sortBySpace() {
 
 void MdModel::ensureForces() {
     if (forcesValid_) return;
-    xPrev_ = state_.x; // no contact begins "during" a recomputation
-    yPrev_ = state_.y;
+    if (params_.forceMethod == "all-pairs") { // no contact begins "during" a recomputation
+        xPrev_ = state_.x;
+        yPrev_ = state_.y;
+    }
     computeForces(Contacts::Initialise, 0.0, true);
-}
-
-void MdModel::recomputeForces() {
-    forcesValid_ = false;
-    ensureForces();
 }
 
 void MdModel::addObstacle(const Obstacle& obstacle) {
@@ -225,9 +222,9 @@ std::vector<double> MdModel::sampleSeries() {
 
 std::vector<NamedHistogram> MdModel::histograms() const {
     std::vector<NamedHistogram> list;
-    if (params_.a.count > 0 || std::count(state_.species.begin(), state_.species.end(), 0) > 0)
-        list.push_back(speedHistogram(0));
-    if (std::count(state_.species.begin(), state_.species.end(), 1) > 0) list.push_back(speedHistogram(1));
+    for (int species : {0, 1})
+        if (std::count(state_.species.begin(), state_.species.end(), species) > 0)
+            list.push_back(speedHistogram(species));
     return list;
 }
 

@@ -91,9 +91,6 @@ public:
     long long removeInRectangle(double x0, double y0, double x1, double y1);
     long long removeNear(double x, double y, double radius);
 
-    // Force on every particle at the current positions (for tests and the parity checks).
-    void recomputeForces();
-
 private:
     // Integrators (MdIntegrators.cpp): one step each, all ending with forces at the new positions.
     void stepVelocityVerlet(double h);

@@ -30,6 +30,13 @@ private slots:
         }
         QVERIFY(std::abs(model.state().vx[0] + 1.0) < 1e-12); // reversed, speed kept
         QVERIFY(std::abs(model.state().vy[0]) < 1e-12);
+        // Once removed, the obstacle no longer stops the disk.
+        model.removeObstacle(0);
+        QVERIFY(model.obstacles().empty());
+        QVERIFY_THROWS_EXCEPTION(std::out_of_range, model.removeObstacle(0));
+        model.placeParticles({{0.0, 0.0, 1.0, 0.0, 0}});
+        for (int s = 0; s < 800; ++s) model.step();
+        QVERIFY(std::abs(model.state().x[0] - 0.8) < 1e-9);
     }
 
     void draggedObstacleImpartsItsVelocity() {
