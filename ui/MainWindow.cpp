@@ -1,114 +1,210 @@
-// MainWindow: toolbar (play/pause, step, reset, signed speed, presets), the particle view, the speed
-// histogram dock and a status line.
+// MainWindow: composition only. Actions live in MainWindowActions.cpp.
 #include "MainWindow.h"
 
-#include "ParticleView.h"
+#include "ExperimentDocument.h"
 #include "SimulationController.h"
-#include "SpeedHistogramPlot.h"
-#include "catalog/ModelCatalog.h"
+#include "panels/ParameterPanel.h"
+#include "plots/DistributionPlot.h"
+#include "plots/SeriesPlotSpecs.h"
+#include "viewport/GLViewport.h"
+#include "viewport/SoftwareViewport.h"
+#include "viewport/ViewportCore.h"
 
-#include <QAction>
+#include <QApplication>
+#include <QCloseEvent>
 #include <QComboBox>
 #include <QDockWidget>
-#include <QFileDialog>
+#include <QGuiApplication>
+#include <QImage>
 #include <QLabel>
+#include <QMenu>
 #include <QMessageBox>
-#include <QSpinBox>
+#include <QPainter>
+#include <QSaveFile>
+#include <QSettings>
 #include <QStatusBar>
-#include <QToolBar>
+#include <QTimer>
 
 namespace pl::ui {
 
-MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), controller_(new SimulationController(this)) {
+namespace {
+constexpr double kProjectorFontScale = 1.6;
+constexpr int kStatusIntervalMs = 250;
+} // namespace
+
+MainWindow::MainWindow(QWidget* parent)
+    : QMainWindow(parent), controller_(new SimulationController(this)),
+      document_(new ExperimentDocument(controller_, this)), baseFont_(QApplication::font()) {
     setWindowTitle(tr("ParticleLab"));
-    setCentralWidget(new ParticleView(controller_, this));
+    setDockOptions(AnimatedDocks | AllowTabbedDocks | AllowNestedDocks);
+    createViewport();
     createActions();
+    createSceneBar();
+    createToolPalette();
     createDocks();
     status_ = new QLabel(this);
-    statusBar()->addWidget(status_, 1);
+    statusBar()->addPermanentWidget(status_);
+    auto* statusTimer = new QTimer(this);
+    connect(statusTimer, &QTimer::timeout, this, &MainWindow::updateStatus);
+    statusTimer->start(kStatusIntervalMs);
+    connect(controller_, &SimulationController::modelReplaced, this, &MainWindow::modelChanged);
     connect(controller_, &SimulationController::frameAdvanced, this, &MainWindow::updateStatus);
     connect(controller_, &SimulationController::failed, this, [this](const QString& message) {
         QMessageBox::warning(this, tr("The simulation stopped"), message);
     });
-    connect(controller_, &SimulationController::runningChanged, this,
-            [this](bool running) { playAction_->setText(running ? tr("Pause") : tr("Play")); });
+    connect(controller_, &SimulationController::runningChanged, this, [this](bool running) {
+        playAction_->setText(running ? tr("Pause") : tr("Play"));
+        playAction_->setIcon(style()->standardIcon(running ? QStyle::SP_MediaPause : QStyle::SP_MediaPlay));
+    });
+    connect(document_, &ExperimentDocument::changed, this, &MainWindow::documentChanged);
+    connect(viewportCore_, &ViewportCore::statusMessage, this,
+            [this](const QString& message) { statusBar()->showMessage(message, 6000); });
+    readSettings();
 }
 
-void MainWindow::createActions() {
-    QToolBar* bar = addToolBar(tr("Simulation"));
-    bar->setObjectName("simulationToolBar");
-    playAction_ = bar->addAction(tr("Play"), controller_, &SimulationController::togglePlay);
-    playAction_->setShortcut(Qt::Key_Space);
-    playAction_->setToolTip(tr("Run or pause the simulation (Space)"));
-    QAction* step = bar->addAction(tr("Step"), controller_, &SimulationController::stepOnce);
-    step->setShortcut(Qt::Key_Period);
-    step->setToolTip(tr("Advance one time step (.)"));
-    QAction* reset = bar->addAction(tr("Reset"), controller_, &SimulationController::reset);
-    reset->setShortcut(Qt::CTRL | Qt::Key_R);
-    reset->setToolTip(tr("Restart from the preset's initial state (Ctrl+R)"));
-    bar->addSeparator();
-    bar->addWidget(new QLabel(tr(" Steps per frame "), bar));
-    speed_ = new QSpinBox(bar);
-    speed_->setRange(-10, 10);
-    speed_->setValue(controller_->stepsPerFrame());
-    speed_->setToolTip(tr("Signed speed: negative values run time backwards, 0 pauses"));
-    connect(speed_, &QSpinBox::valueChanged, controller_, &SimulationController::setStepsPerFrame);
-    bar->addWidget(speed_);
-    bar->addSeparator();
-    presetPicker_ = new QComboBox(bar);
-    for (const auto& p : builtinPresets())
-        presetPicker_->addItem(QString::fromStdString(p.name), QString::fromStdString(p.name));
-    presetPicker_->setToolTip(tr("Built-in experiments"));
-    connect(presetPicker_, &QComboBox::activated, this,
-            [this](int index) { openPreset(presetPicker_->itemData(index).toString()); });
-    bar->addWidget(presetPicker_);
-    QAction* open = bar->addAction(tr("Open…"), this, [this] {
-        const QString path =
-            QFileDialog::getOpenFileName(this, tr("Open preset"), {}, tr("Presets (*.json)"));
-        if (!path.isEmpty()) openPreset(path);
-    });
-    open->setShortcut(QKeySequence::Open);
+void MainWindow::createViewport() {
+    // Qt 6.4's QOpenGLWidget crashes on the offscreen platform: draw with QPainter there.
+    if (QGuiApplication::platformName() == QLatin1String("offscreen")) {
+        auto* view = new SoftwareViewport(controller_, this);
+        viewportCore_ = view->core();
+        viewport_ = view;
+    } else {
+        auto* view = new GLViewport(controller_, this);
+        viewportCore_ = view->core();
+        viewport_ = view;
+    }
+    viewport_->setObjectName("viewport");
+    setCentralWidget(viewport_);
+}
+
+QDockWidget* MainWindow::addDock(QWidget* content, const QString& title, const QString& objectName,
+                                 Qt::DockWidgetArea area, const QStringList& kinds) {
+    auto* dock = new QDockWidget(title, this);
+    dock->setObjectName(objectName);
+    dock->setWidget(content);
+    dock->setProperty("kinds", kinds);
+    addDockWidget(area, dock);
+    viewMenu_->addAction(dock->toggleViewAction());
+    return dock;
 }
 
 void MainWindow::createDocks() {
-    auto* dock = new QDockWidget(tr("Speed histogram"), this);
-    dock->setObjectName("speedHistogramDock");
-    histogram_ = new SpeedHistogramPlot(controller_, dock);
-    histogram_->setMinimumSize(360, 260);
-    dock->setWidget(histogram_);
-    addDockWidget(Qt::RightDockWidgetArea, dock);
+    parameters_ = new ParameterPanel(controller_, this);
+    parameters_->setMinimumWidth(280);
+    addDock(parameters_, tr("Parameters"), "parametersDock", Qt::LeftDockWidgetArea);
+    histogram_ = new DistributionPlot(controller_, "speedHistogram", this);
+    histogram_->setMinimumSize(340, 240);
+    addDock(histogram_, tr("Speed histogram"), "speedHistogramDock", Qt::RightDockWidgetArea, {"gas"});
+    QDockWidget* previous = nullptr;
+    for (const SeriesPlotSpec& spec : seriesPlotSpecs()) {
+        auto* plot = new SeriesPlot(controller_, spec, this);
+        plot->setMinimumSize(340, 240);
+        seriesPlots_.push_back(plot);
+        QDockWidget* dock =
+            addDock(plot, spec.title, spec.objectName + "Dock", Qt::RightDockWidgetArea, spec.kinds);
+        if (previous) tabifyDockWidget(previous, dock);
+        previous = dock;
+    }
+    if (!seriesPlots_.empty())
+        findChild<QDockWidget*>(seriesPlots_.front()->spec().objectName + "Dock")->raise();
+}
+
+void MainWindow::modelChanged() {
+    const Model* model = controller_->model();
+    if (!model) return;
+    const QString kind = QString::fromStdString(model->kind());
+    scenePicker_->setCurrentIndex(scenePicker_->findData(kind));
+    for (QDockWidget* dock : findChildren<QDockWidget*>()) {
+        const QStringList kinds = dock->property("kinds").toStringList();
+        const bool applies = kinds.isEmpty() || kinds.contains(kind);
+        dock->toggleViewAction()->setEnabled(applies);
+        if (!applies && dock->isVisible()) {
+            hiddenForScene_.insert(dock);
+            dock->hide();
+        } else if (applies && hiddenForScene_.remove(dock)) {
+            dock->show();
+        }
+    }
+    tools_->setEnabled(controller_->model()->tools() != nullptr);
+    heat_->setEnabled(controller_->model()->tools() != nullptr);
+    viewportCore_->zoomToFit();
+    updateStatus();
+}
+
+void MainWindow::documentChanged() {
+    setWindowTitle(tr("%1[*] — ParticleLab").arg(document_->title()));
+    setWindowModified(document_->isModified());
+    fillRecentMenu();
+    fillPresetPicker();
 }
 
 bool MainWindow::openPreset(const QString& nameOrPath) {
-    try {
-        return loadPreset(pl::loadPreset(nameOrPath.toStdString()), nameOrPath);
-    } catch (const std::exception& e) {
-        QMessageBox::critical(this, tr("Cannot open preset"), QString::fromUtf8(e.what()));
-        return false;
-    }
+    return document_->open(nameOrPath);
 }
 
-bool MainWindow::loadPreset(const Preset& preset, const QString& label) {
-    const QString error = controller_->load(preset);
-    if (!error.isEmpty()) {
-        QMessageBox::critical(this, tr("Cannot open preset"), error);
-        return false;
+QImage MainWindow::viewportImage() const {
+    if (auto* gl = qobject_cast<GLViewport*>(viewport_)) return gl->grabFramebuffer();
+    return viewport_->grab().toImage();
+}
+
+QImage MainWindow::windowImage() {
+    QImage image = grab().toImage();
+    if (qobject_cast<GLViewport*>(viewport_)) {
+        QPainter painter(&image);
+        painter.drawImage(viewport_->mapTo(this, QPoint(0, 0)), viewportImage());
     }
-    const int index = presetPicker_->findData(label);
-    if (index >= 0) presetPicker_->setCurrentIndex(index);
-    setWindowTitle(tr("ParticleLab — %1").arg(label));
-    updateStatus();
-    return true;
+    return image;
+}
+
+QString MainWindow::saveViewportImage(const QString& path) {
+    const QImage image = viewportImage();
+    QSaveFile file(path);
+    if (!file.open(QIODevice::WriteOnly) || !image.save(&file, "PNG") || !file.commit())
+        return tr("Cannot write %1: %2").arg(path, file.errorString());
+    return {};
+}
+
+void MainWindow::setProjectorMode(bool on) {
+    QFont font = baseFont_;
+    if (on) font.setPointSizeF(baseFont_.pointSizeF() * kProjectorFontScale);
+    QApplication::setFont(font);
+    projectorAction_->setChecked(on);
 }
 
 void MainWindow::updateStatus() {
     const Model* model = controller_->model();
     if (!model) return;
-    status_->setText(tr("%1 particles   t = %2   step %3   %4 steps/s")
+    status_->setText(tr("%1 particles   t = %2   step %3   %4 steps/s   %5 fps")
                          .arg(model->particleCount())
                          .arg(model->time(), 0, 'g', 6)
                          .arg(model->stepCount())
-                         .arg(controller_->stepsPerSecond(), 0, 'f', 0));
+                         .arg(controller_->stepsPerSecond(), 0, 'f', 0)
+                         .arg(viewportCore_->framesPerSecond(), 0, 'f', 0));
+}
+
+void MainWindow::readSettings() {
+    QSettings settings;
+    restoreGeometry(settings.value("window/geometry").toByteArray());
+    restoreState(settings.value("window/state").toByteArray());
+    setProjectorMode(settings.value("window/projector", false).toBool());
+}
+
+void MainWindow::writeSettings() const {
+    QSettings settings;
+    settings.setValue("window/geometry", saveGeometry());
+    settings.setValue("window/state", saveState());
+    settings.setValue("window/projector", projectorAction_->isChecked());
+}
+
+void MainWindow::closeEvent(QCloseEvent* event) {
+    if (!document_->maybeSave()) {
+        event->ignore();
+        return;
+    }
+    // Docks hidden only because this scene lacks their data count as shown for the next start.
+    for (QDockWidget* dock : std::as_const(hiddenForScene_)) dock->show();
+    writeSettings();
+    event->accept();
 }
 
 } // namespace pl::ui

@@ -1,20 +1,27 @@
-// The application's composition root: actions, docks and the central view, wired to one controller.
+// The application's composition root: actions, menus, docks and the viewport, wired to one
+// SimulationController and one ExperimentDocument. It holds no simulation logic.
 #pragma once
 
 #include <QMainWindow>
+#include <QSet>
+#include <vector>
 
+class QActionGroup;
 class QComboBox;
+class QDockWidget;
 class QLabel;
+class QMenu;
+class QSlider;
 class QSpinBox;
-
-namespace pl {
-struct Preset;
-}
 
 namespace pl::ui {
 
+class DistributionPlot;
+class ExperimentDocument;
+class ParameterPanel;
+class SeriesPlot;
 class SimulationController;
-class SpeedHistogramPlot;
+class ViewportCore;
 
 class MainWindow : public QMainWindow {
     Q_OBJECT
@@ -25,20 +32,56 @@ public:
     // (the running experiment is kept). Returns whether it loaded.
     bool openPreset(const QString& nameOrPath);
     SimulationController* controller() const { return controller_; }
-    SpeedHistogramPlot* histogram() const { return histogram_; }
+    ExperimentDocument* document() const { return document_; }
+    DistributionPlot* histogram() const { return histogram_; }
+    ParameterPanel* parameters() const { return parameters_; }
+    const std::vector<SeriesPlot*>& seriesPlots() const { return seriesPlots_; }
+    QWidget* viewport() const { return viewport_; }
+    ViewportCore* viewportCore() const { return viewportCore_; }
+    QImage viewportImage() const;
+    // The whole window as the user sees it (QWidget::grab misses QPainter content drawn in paintGL).
+    QImage windowImage();
+    QString saveViewportImage(const QString& path); // error sentence, or empty
+    void setProjectorMode(bool on);
+
+protected:
+    void closeEvent(QCloseEvent* event) override;
 
 private:
+    void createViewport();
     void createActions();
+    void createSceneBar();
+    void createToolPalette();
     void createDocks();
+    QDockWidget* addDock(QWidget* content, const QString& title, const QString& objectName,
+                         Qt::DockWidgetArea area, const QStringList& kinds = {});
+    void readSettings();
+    void writeSettings() const;
+    void modelChanged();
+    void documentChanged();
     void updateStatus();
-    bool loadPreset(const Preset& preset, const QString& label);
+    void fillPresetPicker();
+    void fillRecentMenu();
 
     SimulationController* controller_;
-    SpeedHistogramPlot* histogram_ = nullptr;
+    ExperimentDocument* document_;
+    QWidget* viewport_ = nullptr;
+    ViewportCore* viewportCore_ = nullptr;
+    ParameterPanel* parameters_ = nullptr;
+    DistributionPlot* histogram_ = nullptr;
+    std::vector<SeriesPlot*> seriesPlots_;
+    QMenu* viewMenu_ = nullptr;
+    QMenu* recentMenu_ = nullptr;
+    QComboBox* scenePicker_ = nullptr;
     QComboBox* presetPicker_ = nullptr;
     QSpinBox* speed_ = nullptr;
+    QSlider* heat_ = nullptr;
     QLabel* status_ = nullptr;
     QAction* playAction_ = nullptr;
+    QAction* projectorAction_ = nullptr;
+    QActionGroup* tools_ = nullptr;
+    QSet<QDockWidget*> hiddenForScene_; // docks hidden because the scene has no data for them
+    QFont baseFont_;
 };
 
 } // namespace pl::ui

@@ -1,4 +1,5 @@
-// SimulationController: fixed-dt stepping driven by a frame timer.
+// SimulationController: fixed-dt stepping driven by a frame timer, so the physics never depends on the
+// frame rate (a slow machine runs the same trajectory, only slower).
 #include "SimulationController.h"
 
 #include <cmath>
@@ -8,10 +9,13 @@ namespace pl::ui {
 namespace {
 constexpr int kFrameIntervalMs = 16; // ~60 frames per second
 constexpr int kMaxStepsPerFrame = 10;
+constexpr int kFramesPerSample = 3;          // ~20 rows per second for the plots
+constexpr double kHeatPerFrameAtFull = 0.03; // relative kinetic-energy change per frame at rate ±1
 } // namespace
 
 SimulationController::SimulationController(QObject* parent) : QObject(parent) {
     timer_.setInterval(kFrameIntervalMs);
+    timer_.setTimerType(Qt::PreciseTimer);
     connect(&timer_, &QTimer::timeout, this, &SimulationController::advanceFrame);
 }
 
@@ -23,12 +27,38 @@ QString SimulationController::load(const Preset& preset) {
         return QString::fromStdString(e.what());
     }
     model_ = std::move(next);
+    pending_.clear();
     const auto values = model_->params();
     const auto it = values.find("dt");
     baseDt_ = it != values.end() ? std::abs(std::get<double>(it->second)) : 0.0;
     applyDirection();
+    restartSeries();
     emit modelReplaced();
     return {};
+}
+
+QString SimulationController::setParameters(const ParamValues& values) {
+    if (!model_) return tr("No experiment is loaded.");
+    try {
+        model_->setParams(values);
+    } catch (const std::exception& e) {
+        return QString::fromStdString(e.what());
+    }
+    for (const auto& [key, value] : values) {
+        const ParamSpec* spec = findSpec(model_->paramSpecs(), key);
+        if (spec && !spec->appliesLive) pending_[key] = value;
+    }
+    if (const auto it = values.find("dt"); it != values.end()) {
+        baseDt_ = std::abs(std::get<double>(it->second));
+        applyDirection();
+    }
+    noteEdited();
+    emit parametersChanged();
+    return {};
+}
+
+void SimulationController::noteEdited() {
+    emit edited();
 }
 
 void SimulationController::play() {
@@ -52,19 +82,27 @@ void SimulationController::stepOnce() {
     if (!model_) return;
     pause();
     model_->step();
+    sample();
     emit frameAdvanced();
 }
 
 void SimulationController::reset() {
     if (!model_) return;
     model_->reset();
+    pending_.clear();
     applyDirection();
+    restartSeries();
+    emit parametersChanged();
     emit frameAdvanced();
 }
 
 void SimulationController::setStepsPerFrame(int n) {
     stepsPerFrame_ = std::clamp(n, -kMaxStepsPerFrame, kMaxStepsPerFrame);
     applyDirection();
+}
+
+void SimulationController::setHeatRate(double rate) {
+    heatRate_ = std::clamp(rate, -1.0, 1.0);
 }
 
 void SimulationController::applyDirection() {
@@ -74,8 +112,20 @@ void SimulationController::applyDirection() {
     if (std::get<double>(values.at("dt")) != signedDt) model_->setParams({{"dt", signedDt}});
 }
 
+void SimulationController::restartSeries() {
+    series_.restart(model_->seriesColumns());
+    framesSinceSample_ = 0;
+    sample();
+}
+
+void SimulationController::sample() {
+    if (model_) series_.append(model_->sampleSeries());
+}
+
 void SimulationController::advanceFrame() {
     if (!model_) return;
+    if (heatRate_ != 0.0 && model_->tools() && model_->particleCount() > 0)
+        model_->tools()->scaleKineticEnergy(std::exp(kHeatPerFrameAtFull * heatRate_));
     const int steps = std::abs(stepsPerFrame_);
     for (int s = 0; s < steps && !model_->failure(); ++s) model_->step();
     stepsSinceClock_ += steps;
@@ -83,6 +133,10 @@ void SimulationController::advanceFrame() {
         stepsPerSecond_ =
             1000.0 * static_cast<double>(stepsSinceClock_) / static_cast<double>(rateClock_.restart());
         stepsSinceClock_ = 0;
+    }
+    if (steps > 0 && ++framesSinceSample_ >= kFramesPerSample) {
+        framesSinceSample_ = 0;
+        sample();
     }
     emit frameAdvanced();
     if (auto failure = model_->failure()) {

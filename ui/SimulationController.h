@@ -1,7 +1,9 @@
 // Owns the model and time: play / pause / single step / reset, signed steps per frame (negative runs
-// time backwards), a frame timer, and blow-up handling. Views only read from it.
+// time backwards), a frame timer, the heat / cool control, blow-up handling, and the time-series store
+// the plots read. Views only read from it; edits go through it so the document knows it is modified.
 #pragma once
 
+#include "SeriesStore.h"
 #include "catalog/ModelCatalog.h"
 
 #include <QElapsedTimer>
@@ -16,13 +18,20 @@ class SimulationController : public QObject {
 public:
     explicit SimulationController(QObject* parent = nullptr);
 
-    // Loads a preset (built-in name or path). On error the current experiment is kept and the message
-    // returned; empty on success.
+    // Loads a preset. On error the current experiment is kept and the message returned; empty on success.
     QString load(const Preset& preset);
     Model* model() const { return model_.get(); }
+    SeriesStore* series() { return &series_; }
     bool isRunning() const { return timer_.isActive(); }
     int stepsPerFrame() const { return stepsPerFrame_; }
     double stepsPerSecond() const { return stepsPerSecond_; }
+
+    // Applies parameter values (all or nothing). Returns the error naming the key, or empty.
+    QString setParameters(const ParamValues& values);
+    // Parameters changed since the last reset that only a reset applies.
+    const ParamValues& pendingUntilReset() const { return pending_; }
+    // Something the user did changed the experiment (tools, parameters): the document is modified.
+    void noteEdited();
 
 public slots:
     void play();
@@ -32,23 +41,34 @@ public slots:
     void reset();
     // −10 … 10 as in the seed's speed slider: |n| steps per frame, the sign chooses the direction of time.
     void setStepsPerFrame(int n);
+    // −1 (cool) … 1 (heat): kinetic energy changes by up to ±3 % per frame while it is non-zero.
+    void setHeatRate(double rate);
     // Advances one frame's worth of steps and notifies views (the timer calls it; tests may too).
     void advanceFrame();
+    // Appends one row of the model's observables to the series store.
+    void sample();
 
 signals:
     void modelReplaced();
     void frameAdvanced();
     void runningChanged(bool running);
     void failed(const QString& message);
+    void edited();
+    void parametersChanged();
 
 private:
     void applyDirection();
+    void restartSeries();
 
     std::unique_ptr<Model> model_;
+    SeriesStore series_;
+    ParamValues pending_;
     QTimer timer_;
     int stepsPerFrame_ = 5;
     double baseDt_ = 0.0;
+    double heatRate_ = 0.0;
     double stepsPerSecond_ = 0.0;
+    int framesSinceSample_ = 0;
     QElapsedTimer rateClock_;
     long long stepsSinceClock_ = 0;
 };

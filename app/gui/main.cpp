@@ -1,15 +1,22 @@
-// particlelab: the desktop application. Usage: particlelab [PRESET|FILE] [--screenshot FILE [--frames N]].
+// particlelab: the desktop application.
+// Usage: particlelab [PRESET|FILE] [--screenshot FILE [--frames N]] [--measure-fps SECONDS]
+#include "ExperimentDocument.h"
 #include "MainWindow.h"
 #include "SimulationController.h"
+#include "viewport/ViewportCore.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
+#include <QElapsedTimer>
+#include <QTimer>
 #include <cstdio>
 
 int main(int argc, char** argv) {
     QApplication app(argc, argv);
     QApplication::setApplicationName("ParticleLab");
     QApplication::setOrganizationName("ParticleLab");
+    QApplication::setDesktopFileName("particlelab");
+    QApplication::setWindowIcon(QIcon::fromTheme("particlelab", QIcon(":/icons/particlelab.svg")));
     QCommandLineParser parser;
     parser.setApplicationDescription("ParticleLab: an interactive physics lab of particles");
     parser.addHelpOption();
@@ -18,23 +25,44 @@ int main(int argc, char** argv) {
                                         "Run --frames frames, save the window as a PNG and quit.", "file");
     const QCommandLineOption frames("frames", "Frames to run before --screenshot (default 300).", "count",
                                     "300");
+    const QCommandLineOption measureFps(
+        "measure-fps", "Run for this many seconds as a user would, print the frame rate and quit.",
+        "seconds");
     parser.addOption(screenshot);
     parser.addOption(frames);
+    parser.addOption(measureFps);
     parser.process(app);
     const QStringList args = parser.positionalArguments();
 
     pl::ui::MainWindow window;
-    if (!window.openPreset(args.isEmpty() ? QStringLiteral("gas-seed") : args.first())) return 2;
+    if (!window.document()->open(args.isEmpty() ? QStringLiteral("gas-seed") : args.first(), true)) return 2;
     window.resize(1280, 800);
     window.show();
     if (parser.isSet(screenshot)) {
         for (int f = 0; f < parser.value(frames).toInt(); ++f) window.controller()->advanceFrame();
         QApplication::processEvents(); // let queued plot replots and repaints run
-        const bool saved = window.grab().save(parser.value(screenshot));
+        const bool saved = window.windowImage().save(parser.value(screenshot));
         if (!saved)
             std::fprintf(stderr, "particlelab: cannot write %s\n", qPrintable(parser.value(screenshot)));
         return saved ? 0 : 4;
     }
     window.controller()->play();
+    if (parser.isSet(measureFps)) {
+        // Frames actually drawn by the viewport while the simulation runs at its normal frame timer.
+        auto* clock = new QElapsedTimer;
+        clock->start();
+        const auto* model = window.controller()->model();
+        const long long startStep = model->stepCount();
+        QTimer::singleShot(static_cast<int>(1000 * parser.value(measureFps).toDouble()), &app, [&, clock] {
+            const double seconds = clock->elapsed() / 1000.0;
+            std::printf(
+                "{\"preset\": \"%s\", \"seconds\": %.2f, \"fps\": %.1f, \"steps_per_second\": %.0f}\n",
+                qPrintable(window.document()->title()), seconds, window.viewportCore()->framesPerSecond(),
+                (window.controller()->model()->stepCount() - startStep) / seconds);
+            std::fflush(stdout);
+            window.document()->setModified(false);
+            QApplication::quit();
+        });
+    }
     return QApplication::exec();
 }

@@ -4,6 +4,8 @@
 #include "Histogram.h"
 #include "ParamSpec.h"
 #include "Preset.h"
+#include "SceneTools.h"
+#include "SceneView.h"
 
 #include <cstdint>
 #include <functional>
@@ -25,6 +27,8 @@ struct ModelFailure {
 
 struct NamedHistogram {
     std::string name;    // e.g. "speed_a"
+    std::string label;   // legend text, e.g. "species A"
+    std::string axis;    // what is binned, with its unit, e.g. "speed [L/T]"
     std::string summary; // one line for a plot title, e.g. "kT = 0.501, KS distance 0.012"
     Histogram counts;    // measured
     std::function<double(double)> theoryDensity; // the density theory predicts (empty when none applies)
@@ -61,6 +65,11 @@ public:
 
     // Particle dump: CSV with a header line.
     virtual void writeParticles(std::ostream& out) const = 0;
+
+    // What a viewport draws now.
+    virtual SceneView sceneView() const = 0;
+    // The mouse tools' entry points; nullptr when the scene has nothing to drag or spawn.
+    virtual SceneTools* tools() { return nullptr; }
 };
 
 } // namespace pl

@@ -47,7 +47,7 @@ struct SpawnResult {
     std::string message() const;
 };
 
-class MdModel : public Model {
+class MdModel : public Model, public SceneTools {
 public:
     MdModel();
 
@@ -68,6 +68,13 @@ public:
     std::vector<double> sampleSeries() override;
     std::vector<NamedHistogram> histograms() const override;
     void writeParticles(std::ostream& out) const override;
+    SceneView sceneView() const override;
+    SceneTools* tools() override { return this; }
+
+    // SceneTools interface (the obstacle and piston functions below belong to it too)
+    bool hasPiston() const override { return params_.pistonEnabled; }
+    std::string spawnInRectangle(double x0, double y0, double x1, double y1) override;
+    void scaleKineticEnergy(double factor) override;
 
     // Gas-specific API
     const MdParams& parameters() const { return params_; }
@@ -76,13 +83,13 @@ public:
     double totalEnergy();    // kinetic + pair + gravity energy of the current state
     NamedHistogram speedHistogram(int species) const;
 
-    const std::vector<Obstacle>& obstacles() const { return obstacles_; }
-    void addObstacle(const Obstacle& obstacle);
-    void removeObstacle(std::size_t index);
+    const std::vector<Obstacle>& obstacles() const override { return obstacles_; }
+    void addObstacle(const Obstacle& obstacle) override;
+    void removeObstacle(std::size_t index) override;
     // Moves an obstacle between steps; velocity [L/T] is what it imparts on disks it hits.
-    void moveObstacle(std::size_t index, double x, double y, double vx, double vy);
+    void moveObstacle(std::size_t index, double x, double y, double vx, double vy) override;
     // Moves the piston between steps with the given velocity [L/T]; x is clamped into the box.
-    void movePiston(double x, double velocity);
+    void movePiston(double x, double velocity) override;
 
     SpawnResult spawnRectangle(double x0, double y0, double x1, double y1, int species, double kT);
     SpawnResult spawnAt(double x, double y, int species, double kT);

@@ -101,6 +101,8 @@ NamedHistogram MdModel::speedHistogram(int species) const {
     const double vmax = kT > 0 ? kHistogramSigmas * std::sqrt(kT / m) : 1.0;
     NamedHistogram h;
     h.name = species == 0 ? "speed_a" : "speed_b";
+    h.label = species == 0 ? "species A" : "species B";
+    h.axis = "speed [L/T]";
     h.counts = Histogram(0.0, vmax, static_cast<std::size_t>(params_.histogramBins));
     for (double v : speeds) h.counts.add(v);
     h.theoryDensity = [kT, m](double v) { return rayleighPdf(v, kT, m); };

@@ -1,0 +1,155 @@
+// ExperimentDocument: the controller loads (and keeps the old model on failure); the document only
+// tracks names, paths and the modified flag around it.
+#include "ExperimentDocument.h"
+
+#include "SimulationController.h"
+#include "catalog/ModelCatalog.h"
+
+#include <QDir>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QMessageBox>
+#include <QSettings>
+#include <QStandardPaths>
+
+namespace pl::ui {
+
+namespace {
+constexpr int kMaxRecentFiles = 8;
+const char* kRecentKey = "recentFiles";
+} // namespace
+
+ExperimentDocument::ExperimentDocument(SimulationController* controller, QWidget* dialogParent)
+    : QObject(dialogParent), controller_(controller), parent_(dialogParent) {
+    connect(controller, &SimulationController::edited, this, [this] { setModified(true); });
+}
+
+void ExperimentDocument::showError(const QString& what, const QString& message) const {
+    QMessageBox::critical(parent_, what, message);
+}
+
+bool ExperimentDocument::open(const QString& nameOrPath, bool force) {
+    if (!force && !maybeSave()) return false;
+    Preset preset;
+    try {
+        preset = loadPreset(nameOrPath.toStdString());
+    } catch (const std::exception& e) {
+        showError(tr("Cannot open preset"), QString::fromUtf8(e.what()));
+        return false;
+    }
+    const bool isFile = QFileInfo::exists(nameOrPath) && !QFileInfo(nameOrPath).isDir();
+    const QString label =
+        preset.name.empty() ? QFileInfo(nameOrPath).completeBaseName() : QString::fromStdString(preset.name);
+    return adopt(preset, isFile ? QFileInfo(nameOrPath).absoluteFilePath() : QString(), label);
+}
+
+bool ExperimentDocument::newExperiment(const std::string& kind) {
+    if (!maybeSave()) return false;
+    auto model = createModel(kind);
+    if (!model) {
+        showError(tr("Cannot create experiment"),
+                  tr("Unknown scene '%1'.").arg(QString::fromStdString(kind)));
+        return false;
+    }
+    Preset preset = model->toPreset();
+    preset.name = "untitled";
+    return adopt(preset, {}, tr("untitled"));
+}
+
+bool ExperimentDocument::adopt(const Preset& preset, const QString& path, const QString& label) {
+    const QString error = controller_->load(preset);
+    if (!error.isEmpty()) {
+        showError(tr("Cannot open preset"), error);
+        return false;
+    }
+    meta_ = preset;
+    path_ = path;
+    label_ = label;
+    modified_ = false;
+    if (!path.isEmpty()) addRecent(path);
+    emit changed();
+    return true;
+}
+
+bool ExperimentDocument::save() {
+    return path_.isEmpty() ? saveAs() : saveTo(path_);
+}
+
+bool ExperimentDocument::saveAs() {
+    QDir().mkpath(userPresetDirectory());
+    const QString suggested = QDir(userPresetDirectory()).filePath(label_ + ".json");
+    const QString path =
+        QFileDialog::getSaveFileName(parent_, tr("Save preset"), suggested, tr("Presets (*.json)"));
+    return !path.isEmpty() && saveTo(path);
+}
+
+bool ExperimentDocument::saveTo(const QString& path) {
+    const Model* model = controller_->model();
+    if (!model) return false;
+    Preset preset = model->toPreset();
+    preset.name = QFileInfo(path).completeBaseName().toStdString();
+    preset.description = meta_.description;
+    try {
+        writePresetFile(path.toStdString(), preset, model->paramSpecs());
+    } catch (const std::exception& e) {
+        showError(tr("Cannot save preset"), QString::fromUtf8(e.what()));
+        return false;
+    }
+    meta_ = preset;
+    path_ = QFileInfo(path).absoluteFilePath();
+    label_ = QString::fromStdString(preset.name);
+    modified_ = false;
+    addRecent(path_);
+    emit changed();
+    return true;
+}
+
+bool ExperimentDocument::maybeSave() {
+    if (!modified_) return true;
+    const auto answer = QMessageBox::warning(
+        parent_, tr("Unsaved changes"),
+        tr("The experiment '%1' has changes. Save them as a preset?").arg(label_),
+        QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
+    if (answer == QMessageBox::Save) return save();
+    return answer == QMessageBox::Discard;
+}
+
+void ExperimentDocument::setModified(bool modified) {
+    if (modified_ == modified) return;
+    modified_ = modified;
+    emit changed();
+}
+
+QString ExperimentDocument::title() const {
+    return label_;
+}
+
+QStringList ExperimentDocument::recentFiles() const {
+    QStringList files = QSettings().value(kRecentKey).toStringList();
+    files.erase(
+        std::remove_if(files.begin(), files.end(), [](const QString& f) { return !QFileInfo::exists(f); }),
+        files.end());
+    return files;
+}
+
+void ExperimentDocument::addRecent(const QString& path) {
+    QStringList files = QSettings().value(kRecentKey).toStringList();
+    files.removeAll(path);
+    files.prepend(path);
+    while (files.size() > kMaxRecentFiles) files.removeLast();
+    QSettings().setValue(kRecentKey, files);
+}
+
+QString ExperimentDocument::userPresetDirectory() {
+    return QDir(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation)).filePath("presets");
+}
+
+QStringList ExperimentDocument::userPresetFiles() {
+    QStringList files;
+    const QDir dir(userPresetDirectory());
+    for (const QString& name : dir.entryList({"*.json"}, QDir::Files, QDir::Name))
+        files << dir.filePath(name);
+    return files;
+}
+
+} // namespace pl::ui

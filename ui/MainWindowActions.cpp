@@ -1,0 +1,228 @@
+// MainWindow's actions, menus and tool bars. Every toolbar action has a shortcut and a tooltip.
+#include "ExperimentDocument.h"
+#include "MainWindow.h"
+#include "SimulationController.h"
+#include "catalog/ModelCatalog.h"
+#include "viewport/ViewportCore.h"
+
+#include <QActionGroup>
+#include <QApplication>
+#include <QComboBox>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QLabel>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QSlider>
+#include <QSpinBox>
+#include <QStatusBar>
+#include <QToolBar>
+
+namespace pl::ui {
+
+namespace {
+constexpr double kHeatStep = 1.1; // one press of Heat / Cool: ×1.1 or ÷1.1 kinetic energy
+
+QAction* menuAction(QMenu* menu, const QString& text, const QKeySequence& shortcut, const QString& tip) {
+    QAction* action = menu->addAction(text);
+    action->setShortcut(shortcut);
+    action->setToolTip(shortcut.isEmpty()
+                           ? tip
+                           : QStringLiteral("%1 (%2)").arg(tip, shortcut.toString(QKeySequence::NativeText)));
+    action->setStatusTip(tip);
+    return action;
+}
+} // namespace
+
+void MainWindow::createActions() {
+    QMenu* file = menuBar()->addMenu(tr("&File"));
+    QMenu* newMenu = file->addMenu(tr("&New experiment"));
+    for (const ModelInfo& info : modelCatalog()) {
+        QAction* action = newMenu->addAction(QString::fromStdString(info.title));
+        connect(action, &QAction::triggered, this,
+                [this, kind = info.kind] { document_->newExperiment(kind); });
+    }
+    if (!newMenu->actions().isEmpty()) newMenu->actions().front()->setShortcut(QKeySequence::New);
+    connect(menuAction(file, tr("&Open preset…"), QKeySequence::Open, tr("Open a preset file")),
+            &QAction::triggered, this, [this] {
+                const QString path = QFileDialog::getOpenFileName(this, tr("Open preset"),
+                                                                  ExperimentDocument::userPresetDirectory(),
+                                                                  tr("Presets (*.json)"));
+                if (!path.isEmpty()) document_->open(path);
+            });
+    recentMenu_ = file->addMenu(tr("Open &recent"));
+    file->addSeparator();
+    connect(menuAction(file, tr("&Save preset"), QKeySequence::Save, tr("Save the experiment as a preset")),
+            &QAction::triggered, document_, &ExperimentDocument::save);
+    connect(menuAction(file, tr("Save preset &as…"), QKeySequence::SaveAs,
+                       tr("Save the experiment under a new name")),
+            &QAction::triggered, document_, &ExperimentDocument::saveAs);
+    file->addSeparator();
+    connect(menuAction(file, tr("Save viewport &image…"), QKeySequence(Qt::CTRL | Qt::Key_E),
+                       tr("Save what the viewport shows as a PNG")),
+            &QAction::triggered, this, [this] {
+                const QString path = QFileDialog::getSaveFileName(
+                    this, tr("Save viewport image"), document_->title() + ".png", tr("PNG image (*.png)"));
+                if (path.isEmpty()) return;
+                const QString error = saveViewportImage(path);
+                if (!error.isEmpty()) QMessageBox::critical(this, tr("Cannot save the image"), error);
+            });
+    file->addSeparator();
+    connect(menuAction(file, tr("&Quit"), QKeySequence::Quit, tr("Close ParticleLab")), &QAction::triggered,
+            this, &QWidget::close);
+
+    QMenu* sim = menuBar()->addMenu(tr("&Simulation"));
+    QToolBar* bar = addToolBar(tr("Simulation"));
+    bar->setObjectName("simulationToolBar");
+    playAction_ = menuAction(sim, tr("Play"), Qt::Key_Space, tr("Run or pause the simulation"));
+    playAction_->setIcon(style()->standardIcon(QStyle::SP_MediaPlay));
+    connect(playAction_, &QAction::triggered, controller_, &SimulationController::togglePlay);
+    QAction* step = menuAction(sim, tr("Step"), Qt::Key_Period, tr("Advance one time step"));
+    step->setIcon(style()->standardIcon(QStyle::SP_MediaSkipForward));
+    connect(step, &QAction::triggered, controller_, &SimulationController::stepOnce);
+    QAction* reset = menuAction(sim, tr("Reset"), QKeySequence(Qt::CTRL | Qt::Key_R),
+                                tr("Restart from the initial state with the current parameters"));
+    reset->setIcon(style()->standardIcon(QStyle::SP_BrowserReload));
+    connect(reset, &QAction::triggered, controller_, &SimulationController::reset);
+    bar->addActions({playAction_, step, reset});
+    bar->addSeparator();
+    bar->addWidget(new QLabel(tr(" Steps per frame "), bar));
+    speed_ = new QSpinBox(bar);
+    speed_->setRange(-10, 10);
+    speed_->setValue(controller_->stepsPerFrame());
+    speed_->setToolTip(tr("Signed speed: negative values run time backwards, 0 pauses ([ slower, ] faster)"));
+    connect(speed_, &QSpinBox::valueChanged, controller_, &SimulationController::setStepsPerFrame);
+    bar->addWidget(speed_);
+    connect(menuAction(sim, tr("Slower"), Qt::Key_BracketLeft, tr("One step per frame less")),
+            &QAction::triggered, speed_, [this] { speed_->stepDown(); });
+    connect(menuAction(sim, tr("Faster"), Qt::Key_BracketRight, tr("One step per frame more")),
+            &QAction::triggered, speed_, [this] { speed_->stepUp(); });
+    connect(menuAction(sim, tr("Reverse time"), Qt::Key_Backspace, tr("Run time the other way")),
+            &QAction::triggered, speed_, [this] { speed_->setValue(-speed_->value()); });
+
+    viewMenu_ = menuBar()->addMenu(tr("&View"));
+    connect(menuAction(viewMenu_, tr("Zoom to &fit"), QKeySequence(Qt::CTRL | Qt::Key_0),
+                       tr("Show the whole scene (the wheel zooms, the middle button pans)")),
+            &QAction::triggered, this, [this] { viewportCore_->zoomToFit(); });
+    projectorAction_ =
+        menuAction(viewMenu_, tr("&Projector mode"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_P),
+                   tr("Large fonts and thick lines for a classroom projector"));
+    projectorAction_->setCheckable(true);
+    connect(projectorAction_, &QAction::toggled, this, &MainWindow::setProjectorMode);
+    viewMenu_->addSeparator();
+}
+
+void MainWindow::createSceneBar() {
+    QToolBar* bar = addToolBar(tr("Experiment"));
+    bar->setObjectName("experimentToolBar");
+    bar->addWidget(new QLabel(tr(" Scene "), bar));
+    scenePicker_ = new QComboBox(bar);
+    for (const ModelInfo& info : modelCatalog())
+        scenePicker_->addItem(QString::fromStdString(info.title), QString::fromStdString(info.kind));
+    scenePicker_->setToolTip(tr("The kind of simulation: choosing one opens its first built-in experiment"));
+    connect(scenePicker_, &QComboBox::activated, this, [this](int index) {
+        const QString kind = scenePicker_->itemData(index).toString();
+        if (controller_->model() && QString::fromStdString(controller_->model()->kind()) == kind) return;
+        for (const auto& p : builtinPresets())
+            if (QString::fromStdString(p.preset.model) == kind &&
+                document_->open(QString::fromStdString(p.name)))
+                return;
+        modelChanged(); // cancelled or failed: show the scene that still runs
+    });
+    bar->addWidget(scenePicker_);
+    bar->addWidget(new QLabel(tr(" Preset "), bar));
+    presetPicker_ = new QComboBox(bar);
+    presetPicker_->setMinimumContentsLength(18);
+    presetPicker_->setToolTip(tr("Built-in experiments and your saved presets"));
+    connect(presetPicker_, &QComboBox::activated, this, [this](int index) {
+        const QString target = presetPicker_->itemData(index).toString();
+        if (!target.isEmpty()) document_->open(target);
+        fillPresetPicker(); // shows the experiment that runs, also after a cancelled or failed load
+    });
+    bar->addWidget(presetPicker_);
+    fillPresetPicker();
+}
+
+void MainWindow::createToolPalette() {
+    addToolBarBreak();
+    QToolBar* bar = addToolBar(tr("Tools"));
+    bar->setObjectName("toolsToolBar");
+    QMenu* menu = menuBar()->addMenu(tr("&Tools"));
+    tools_ = new QActionGroup(this);
+    const struct {
+        ViewportTool tool;
+        QString text, tip;
+    } entries[] = {
+        {ViewportTool::Drag, tr("Drag"), tr("Drag obstacles and the piston; drag empty space to pan")},
+        {ViewportTool::Spawn, tr("Spawn"),
+         tr("Drag a rectangle to fill it with particles, or click for one")},
+        {ViewportTool::AddDisc, tr("Add disc"), tr("Click to place a disc obstacle")},
+        {ViewportTool::AddBox, tr("Add box"), tr("Drag a rectangle to place a box obstacle")},
+        {ViewportTool::Remove, tr("Remove"), tr("Click an obstacle to remove it")},
+        {ViewportTool::Piston, tr("Piston"), tr("Drag to move the piston (when enabled in Parameters)")},
+    };
+    int key = Qt::Key_1;
+    for (const auto& entry : entries) {
+        QAction* action = menuAction(menu, entry.text, QKeySequence(key++), entry.tip);
+        action->setCheckable(true);
+        action->setChecked(entry.tool == ViewportTool::Drag);
+        tools_->addAction(action);
+        bar->addAction(action);
+        connect(action, &QAction::triggered, this,
+                [this, tool = entry.tool] { viewportCore_->setTool(tool); });
+    }
+    bar->addSeparator();
+    bar->addWidget(new QLabel(tr(" Cool "), bar));
+    heat_ = new QSlider(Qt::Horizontal, bar);
+    heat_->setRange(-100, 100);
+    heat_->setFixedWidth(140);
+    heat_->setToolTip(tr("Hold to the right to heat, to the left to cool; it springs back when released"));
+    connect(heat_, &QSlider::valueChanged, controller_,
+            [this](int v) { controller_->setHeatRate(v / 100.0); });
+    connect(heat_, &QSlider::sliderReleased, heat_, [this] { heat_->setValue(0); });
+    bar->addWidget(heat_);
+    bar->addWidget(new QLabel(tr(" Heat "), bar));
+    menu->addSeparator();
+    const auto scaleEnergy = [this](double factor) {
+        Model* model = controller_->model();
+        if (!model || !model->tools()) return;
+        model->tools()->scaleKineticEnergy(factor);
+        controller_->noteEdited();
+        viewport_->update();
+    };
+    connect(menuAction(menu, tr("Heat"), QKeySequence(Qt::CTRL | Qt::Key_Up),
+                       tr("Raise the kinetic energy by 10 %")),
+            &QAction::triggered, this, [scaleEnergy] { scaleEnergy(kHeatStep); });
+    connect(menuAction(menu, tr("Cool"), QKeySequence(Qt::CTRL | Qt::Key_Down),
+                       tr("Lower the kinetic energy by 10 %")),
+            &QAction::triggered, this, [scaleEnergy] { scaleEnergy(1.0 / kHeatStep); });
+}
+
+void MainWindow::fillPresetPicker() {
+    const QSignalBlocker block(presetPicker_);
+    presetPicker_->clear();
+    for (const auto& p : builtinPresets())
+        presetPicker_->addItem(QString::fromStdString(p.name), QString::fromStdString(p.name));
+    const QStringList user = ExperimentDocument::userPresetFiles();
+    if (!user.isEmpty()) presetPicker_->insertSeparator(presetPicker_->count());
+    for (const QString& path : user)
+        presetPicker_->addItem(tr("%1 (mine)").arg(QFileInfo(path).completeBaseName()), path);
+    int current = presetPicker_->findData(document_->filePath());
+    if (current < 0 || document_->filePath().isEmpty()) current = presetPicker_->findData(document_->title());
+    if (current < 0) {
+        presetPicker_->insertItem(0, document_->title(), QString());
+        current = 0;
+    }
+    presetPicker_->setCurrentIndex(current);
+}
+
+void MainWindow::fillRecentMenu() {
+    recentMenu_->clear();
+    const QStringList files = document_->recentFiles();
+    for (const QString& path : files)
+        recentMenu_->addAction(QFileInfo(path).fileName(), this, [this, path] { document_->open(path); })
+            ->setToolTip(path);
+    recentMenu_->setEnabled(!files.isEmpty());
+}
+
+} // namespace pl::ui

@@ -1,0 +1,132 @@
+// SeriesPlot: graphs bound to store columns by name when a model is loaded; one replot per new row.
+#include "SeriesPlot.h"
+
+#include "PlotExport.h"
+#include "PlotStyle.h"
+#include "SimulationController.h"
+
+#include <QVBoxLayout>
+#include <cmath>
+#include <qcustomplot.h>
+
+namespace pl::ui {
+
+SeriesPlot::SeriesPlot(SimulationController* controller, SeriesPlotSpec spec, QWidget* parent)
+    : QWidget(parent), controller_(controller), spec_(std::move(spec)), plot_(new QCustomPlot(this)) {
+    plot_->setObjectName(spec_.objectName);
+    plot_->setAutoAddPlottableToLegend(false);
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(plot_);
+    installPlotExportMenu(plot_);
+    connect(controller->series(), &SeriesStore::restarted, this, &SeriesPlot::rebuild);
+    connect(controller->series(), &SeriesStore::appended, this, &SeriesPlot::refresh);
+    rebuild();
+}
+
+void SeriesPlot::addPanel(QCPAxisRect* rect, const SeriesPanel& panel) {
+    const SeriesStore* store = controller_->series();
+    rect->axis(QCPAxis::atLeft)->setLabel(panel.yLabel);
+    rect->axis(QCPAxis::atBottom)->setLabel(tr("time"));
+    if (panel.logarithmic) {
+        rect->axis(QCPAxis::atLeft)->setScaleType(QCPAxis::stLogarithmic);
+        rect->axis(QCPAxis::atLeft)->setTicker(QSharedPointer<QCPAxisTickerLog>(new QCPAxisTickerLog));
+        rect->axis(QCPAxis::atLeft)->setNumberFormat("eb"); // 10⁻⁴ rather than 0.0001
+        rect->axis(QCPAxis::atLeft)->setNumberPrecision(0);
+    }
+    auto* legend = new QCPLegend;
+    rect->insetLayout()->addElement(legend, Qt::AlignTop | Qt::AlignRight);
+    legend->setLayer("legend");
+    legend->setBrush(QColor(255, 255, 255, 200));
+    for (const auto& curve : panel.curves) {
+        const int column = store->column(curve.column);
+        if (column < 0) continue;
+        QCPGraph* graph = plot_->addGraph(rect->axis(QCPAxis::atBottom), rect->axis(QCPAxis::atLeft));
+        graph->setName(curve.label);
+        graph->setPen(QPen(curve.colour, 1.6));
+        graph->addToLegend(legend);
+        bound_.push_back({plot_->graphCount() - 1, column, curve.label, legend});
+    }
+}
+
+void SeriesPlot::rebuild() {
+    plot_->clearGraphs();
+    plot_->plotLayout()->clear();
+    bound_.clear();
+    auto* upper = new QCPAxisRect(plot_);
+    plot_->plotLayout()->addElement(0, 0, upper);
+    addPanel(upper, spec_.upper);
+    if (!spec_.lower.curves.empty()) {
+        auto* lower = new QCPAxisRect(plot_);
+        plot_->plotLayout()->addElement(1, 0, lower);
+        addPanel(lower, spec_.lower);
+        // One time axis for both panels.
+        connect(upper->axis(QCPAxis::atBottom), qOverload<const QCPRange&>(&QCPAxis::rangeChanged),
+                lower->axis(QCPAxis::atBottom), qOverload<const QCPRange&>(&QCPAxis::setRange));
+    }
+    applyPlotFont(plot_, font());
+    refresh();
+}
+
+void SeriesPlot::refresh() {
+    const SeriesStore* store = controller_->series();
+    const QVector<double> time = store->values(store->column("time"));
+    for (const auto& b : bound_) {
+        const QVector<double> values = store->values(b.column);
+        QCPGraph* graph = plot_->graph(b.graph);
+        graph->setData(time, values, true);
+        // A column that is NaN throughout (kT of an absent species) stays out of the plot and legend.
+        const bool any = std::any_of(values.begin(), values.end(), [](double v) { return std::isfinite(v); });
+        graph->setVisible(any);
+        if (any)
+            graph->addToLegend(b.legend);
+        else
+            graph->removeFromLegend(b.legend);
+        // The legend shows the latest value: the number a teacher reads out.
+        graph->setName(!values.isEmpty() && std::isfinite(values.back())
+                           ? QStringLiteral("%1  %2").arg(b.label).arg(values.back(), 0, 'g', 4)
+                           : b.label);
+    }
+    if (time.size() > 1)
+        for (auto* rect : plot_->axisRects())
+            rect->axis(QCPAxis::atBottom)
+                ->setRange(std::min(time.front(), time.back()), std::max(time.front(), time.back()));
+    for (auto* rect : plot_->axisRects()) {
+        QCPAxis* y = rect->axis(QCPAxis::atLeft);
+        const auto graphs = y->graphs();
+        if (graphs.isEmpty()) continue;
+        // Each panel's value range covers all its graphs, with a margin so curves do not touch the frame.
+        bool first = true;
+        QCPRange range;
+        for (QCPGraph* graph : graphs) {
+            if (!graph->visible()) continue;
+            bool found = false;
+            const bool log = y->scaleType() == QCPAxis::stLogarithmic;
+            const QCPRange r = graph->getValueRange(found, log ? QCP::sdPositive : QCP::sdBoth);
+            if (!found) continue;
+            if (first)
+                range = r;
+            else
+                range.expand(r);
+            first = false;
+        }
+        if (first) continue;
+        if (y->scaleType() == QCPAxis::stLogarithmic) {
+            // At least two decades, so the log ticks have powers of ten to mark.
+            range.lower = std::max(range.lower, range.upper * 1e-12);
+            y->setRange(std::min(range.lower / 2, range.upper / 100), range.upper * 2);
+        } else {
+            const double pad =
+                range.size() > 0 ? 0.08 * range.size() : std::max(1e-12, std::abs(range.upper) * 0.05);
+            y->setRange(range.lower - pad, range.upper + pad);
+        }
+    }
+    plot_->replot(QCustomPlot::rpQueuedReplot);
+}
+
+void SeriesPlot::changeEvent(QEvent* event) {
+    QWidget::changeEvent(event);
+    if (event->type() == QEvent::FontChange) applyPlotFont(plot_, font());
+}
+
+} // namespace pl::ui

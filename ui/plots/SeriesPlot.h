@@ -1,0 +1,65 @@
+// A plot of columns of the series store against time: an upper panel and an optional lower one (linear
+// or logarithmic), the latest values in the legend. The Energy and Thermodynamics docks are instances.
+#pragma once
+
+#include <QColor>
+#include <QStringList>
+#include <QWidget>
+#include <vector>
+
+class QCustomPlot;
+class QCPAxisRect;
+class QCPLegend;
+
+namespace pl::ui {
+
+class SimulationController;
+
+struct SeriesCurve {
+    QString column; // the model's series column
+    QString label;  // legend text
+    QColor colour;
+};
+
+struct SeriesPanel {
+    QString yLabel;
+    std::vector<SeriesCurve> curves;
+    bool logarithmic = false;
+};
+
+struct SeriesPlotSpec {
+    QString objectName; // stable: dock layout and export file names use it
+    QString title;      // the dock's title
+    QStringList kinds;  // model kinds that have these columns
+    SeriesPanel upper;
+    SeriesPanel lower; // no curves: no lower panel
+};
+
+class SeriesPlot : public QWidget {
+    Q_OBJECT
+public:
+    SeriesPlot(SimulationController* controller, SeriesPlotSpec spec, QWidget* parent = nullptr);
+    const SeriesPlotSpec& spec() const { return spec_; }
+    QCustomPlot* plot() const { return plot_; }
+    void refresh();
+
+protected:
+    void changeEvent(QEvent* event) override; // the projector mode changes the application font
+
+private:
+    void rebuild();
+    void addPanel(QCPAxisRect* rect, const SeriesPanel& panel);
+
+    SimulationController* controller_;
+    SeriesPlotSpec spec_;
+    QCustomPlot* plot_;
+    struct Bound {
+        int graph; // index into plot_->graph()
+        int column;
+        QString label;
+        QCPLegend* legend;
+    };
+    std::vector<Bound> bound_;
+};
+
+} // namespace pl::ui

@@ -1,0 +1,159 @@
+// GLViewport: GLSL 3.30 is enough for drawing (instancing, gl_VertexID); the simulation's compute
+// shaders need 4.3, the viewport does not.
+#include "GLViewport.h"
+
+#include "Palette.h"
+#include "SimulationController.h"
+#include "ViewportCore.h"
+
+#include <QPainter>
+
+namespace pl::ui {
+
+namespace {
+
+const char* kVertexShader = R"(#version 330 core
+layout(location = 0) in vec4 particle; // x, y [world], radius [world], colour value
+uniform vec2 worldToNdcScale;
+uniform vec2 worldToNdcOffset;
+uniform vec2 pixelToNdc;
+uniform float pixelsPerWorld;
+uniform float pointRadiusPx;
+out vec2 offsetPx;
+out float radiusPx;
+out float value;
+const vec2 corners[4] = vec2[](vec2(-1.0, -1.0), vec2(1.0, -1.0), vec2(-1.0, 1.0), vec2(1.0, 1.0));
+void main() {
+    radiusPx = particle.z > 0.0 ? max(particle.z * pixelsPerWorld, 1.0) : pointRadiusPx;
+    vec2 corner = corners[gl_VertexID] * (radiusPx + 1.0); // one pixel more for the antialiased rim
+    offsetPx = corner;
+    value = particle.w;
+    gl_Position = vec4(particle.xy * worldToNdcScale + worldToNdcOffset + corner * pixelToNdc, 0.0, 1.0);
+}
+)";
+
+const char* kFragmentShader = R"(#version 330 core
+in vec2 offsetPx;
+in float radiusPx;
+in float value;
+uniform vec3 stops[10];
+uniform int stopCount;
+uniform bool categorical;
+out vec4 colour;
+vec3 palette(float v) {
+    if (categorical) return stops[clamp(int(v), 0, stopCount - 1)];
+    float x = clamp(v, 0.0, 1.0) * float(stopCount - 1);
+    int i = min(int(floor(x)), stopCount - 2);
+    return mix(stops[i], stops[i + 1], x - float(i));
+}
+void main() {
+    // Coverage of the pixel by the disc: 1 inside, 0 outside, linear across the one-pixel rim.
+    float coverage = clamp(radiusPx + 0.5 - length(offsetPx), 0.0, 1.0);
+    if (coverage <= 0.0) discard;
+    colour = vec4(palette(value), coverage);
+}
+)";
+
+constexpr float kPointRadiusPx = 2.0f;
+
+} // namespace
+
+GLViewport::GLViewport(SimulationController* controller, QWidget* parent)
+    : QOpenGLWidget(parent), core_(new ViewportCore(controller, this)) {
+    connect(controller, &SimulationController::frameAdvanced, this, qOverload<>(&QWidget::update));
+    connect(controller, &SimulationController::modelReplaced, this, qOverload<>(&QWidget::update));
+}
+
+GLViewport::~GLViewport() {
+    makeCurrent();
+    releaseGL();
+    doneCurrent();
+}
+
+void GLViewport::contextGoingAway() {
+    makeCurrent();
+    releaseGL();
+    doneCurrent();
+}
+
+void GLViewport::releaseGL() {
+    if (!ready_) return;
+    instances_.destroy();
+    vao_.destroy();
+    program_.removeAllShaders();
+    ready_ = false;
+}
+
+void GLViewport::initializeGL() {
+    initializeOpenGLFunctions();
+    // A floated dock re-creates the context: drop what belonged to the old one first.
+    connect(context(), &QOpenGLContext::aboutToBeDestroyed, this, &GLViewport::contextGoingAway,
+            Qt::UniqueConnection);
+    if (!program_.addShaderFromSourceCode(QOpenGLShader::Vertex, kVertexShader) ||
+        !program_.addShaderFromSourceCode(QOpenGLShader::Fragment, kFragmentShader) || !program_.link()) {
+        qWarning("GLViewport: cannot build the particle shader: %s", qPrintable(program_.log()));
+        return;
+    }
+    vao_.create();
+    instances_.create();
+    instances_.setUsagePattern(QOpenGLBuffer::StreamDraw);
+    ready_ = true;
+}
+
+void GLViewport::drawParticles() {
+    const SceneView& scene = core_->scene();
+    if (!ready_ || scene.size() == 0) return;
+    packed_.resize(4 * scene.size());
+    for (std::size_t i = 0; i < scene.size(); ++i) {
+        packed_[4 * i] = scene.x[i];
+        packed_[4 * i + 1] = scene.y[i];
+        packed_[4 * i + 2] = scene.radius[i];
+        packed_[4 * i + 3] = scene.value[i];
+    }
+    const ViewTransform& t = core_->transform();
+    const auto w = static_cast<float>(t.size().width()), h = static_cast<float>(t.size().height());
+    const auto s = static_cast<float>(t.scale());
+    program_.bind();
+    program_.setUniformValue("worldToNdcScale", 2 * s / w, 2 * s / h);
+    program_.setUniformValue("worldToNdcOffset", static_cast<float>(-2 * s * t.centreX() / w),
+                             static_cast<float>(-2 * s * t.centreY() / h));
+    program_.setUniformValue("pixelToNdc", 2 / w, 2 / h);
+    program_.setUniformValue("pixelsPerWorld", s);
+    program_.setUniformValue("pointRadiusPx", kPointRadiusPx);
+    const QVector<QColor>& stops = paletteStops(scene.colours);
+    QVector<QVector3D> rgb;
+    for (const QColor& c : stops) rgb << QVector3D(c.redF(), c.greenF(), c.blueF());
+    program_.setUniformValueArray("stops", rgb.constData(), static_cast<int>(rgb.size()));
+    program_.setUniformValue("stopCount", static_cast<int>(rgb.size()));
+    program_.setUniformValue("categorical", isCategorical(scene.colours));
+
+    vao_.bind();
+    instances_.bind();
+    instances_.allocate(packed_.data(), static_cast<int>(packed_.size() * sizeof(float)));
+    glEnableVertexAttribArray(0);
+    glVertexAttribPointer(0, 4, GL_FLOAT, GL_FALSE, 4 * sizeof(float), nullptr);
+    glVertexAttribDivisor(0, 1);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(scene.size()));
+    glDisable(GL_BLEND);
+    instances_.release();
+    vao_.release();
+    program_.release();
+}
+
+void GLViewport::paintGL() {
+    core_->beginPaint();
+    QPainter painter(this);
+    painter.beginNativePainting(); // Qt's documented way to mix raw GL with QPainter on this widget
+    const auto& bg = core_->scene().background;
+    glClearColor(bg[0], bg[1], bg[2], 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+    drawParticles();
+    painter.endNativePainting();
+    core_->paintOverlay(painter);
+    painter.end();
+    core_->endPaint();
+}
+
+} // namespace pl::ui

@@ -1,0 +1,43 @@
+// The OpenGL viewport: particles as antialiased discs drawn by one instanced draw call (a quad per
+// particle, the disc cut out in the fragment shader), then the QPainter overlay. Never created on the
+// `offscreen` platform, where Qt 6.4's QOpenGLWidget crashes; SoftwareViewport stands in there.
+#pragma once
+
+#include <QOpenGLBuffer>
+#include <QOpenGLExtraFunctions>
+#include <QOpenGLShaderProgram>
+#include <QOpenGLVertexArrayObject>
+#include <QOpenGLWidget>
+#include <vector>
+
+namespace pl::ui {
+
+class SimulationController;
+class ViewportCore;
+
+class GLViewport : public QOpenGLWidget, protected QOpenGLExtraFunctions {
+    Q_OBJECT
+public:
+    explicit GLViewport(SimulationController* controller, QWidget* parent = nullptr);
+    ~GLViewport() override;
+    ViewportCore* core() const { return core_; }
+    QSize sizeHint() const override { return {800, 800}; }
+
+protected:
+    void initializeGL() override;
+    void paintGL() override;
+
+private:
+    void contextGoingAway(); // the dock was floated or the widget re-parented: a new context follows
+    void releaseGL();
+    void drawParticles();
+
+    ViewportCore* core_;
+    QOpenGLShaderProgram program_;
+    QOpenGLVertexArrayObject vao_;
+    QOpenGLBuffer instances_{QOpenGLBuffer::VertexBuffer};
+    std::vector<float> packed_; // x, y, radius, value per particle
+    bool ready_ = false;
+};
+
+} // namespace pl::ui

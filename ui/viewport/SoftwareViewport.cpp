@@ -1,0 +1,29 @@
+// SoftwareViewport: background, particles, overlay, in that order.
+#include "SoftwareViewport.h"
+
+#include "SimulationController.h"
+#include "ViewportCore.h"
+
+#include <QPainter>
+
+namespace pl::ui {
+
+SoftwareViewport::SoftwareViewport(SimulationController* controller, QWidget* parent)
+    : QWidget(parent), core_(new ViewportCore(controller, this)) {
+    setAttribute(Qt::WA_OpaquePaintEvent);
+    connect(controller, &SimulationController::frameAdvanced, this, qOverload<>(&QWidget::update));
+    connect(controller, &SimulationController::modelReplaced, this, qOverload<>(&QWidget::update));
+}
+
+void SoftwareViewport::paintEvent(QPaintEvent*) {
+    core_->beginPaint();
+    QPainter painter(this);
+    const auto& bg = core_->scene().background;
+    painter.fillRect(rect(), QColor::fromRgbF(bg[0], bg[1], bg[2]));
+    painter.setRenderHint(QPainter::Antialiasing);
+    core_->paintParticles(painter);
+    core_->paintOverlay(painter);
+    core_->endPaint();
+}
+
+} // namespace pl::ui
