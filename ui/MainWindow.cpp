@@ -57,8 +57,9 @@ MainWindow::MainWindow(QWidget* parent)
         playAction_->setIcon(style()->standardIcon(running ? QStyle::SP_MediaPause : QStyle::SP_MediaPlay));
     });
     connect(document_, &ExperimentDocument::changed, this, &MainWindow::documentChanged);
-    connect(viewportCore_, &ViewportCore::statusMessage, this,
-            [this](const QString& message) { statusBar()->showMessage(message, 6000); });
+    const auto showMessage = [this](const QString& message) { statusBar()->showMessage(message, 6000); };
+    connect(viewportCore_, &ViewportCore::statusMessage, this, showMessage);
+    connect(controller_, &SimulationController::notice, this, showMessage);
     readSettings();
 }
 
@@ -92,9 +93,15 @@ void MainWindow::createDocks() {
     parameters_ = new ParameterPanel(controller_, this);
     parameters_->setMinimumWidth(280);
     addDock(parameters_, tr("Parameters"), "parametersDock", Qt::LeftDockWidgetArea);
-    histogram_ = new DistributionPlot(controller_, "speedHistogram", this);
+    histogram_ = new DistributionPlot(controller_, "speedHistogram", "speed", this);
     histogram_->setMinimumSize(340, 240);
-    addDock(histogram_, tr("Speed histogram"), "speedHistogramDock", Qt::RightDockWidgetArea, {"gas"});
+    QDockWidget* speed = addDock(histogram_, tr("Speed distribution"), "speedHistogramDock",
+                                 Qt::RightDockWidgetArea, {"gas", "dsmc"});
+    auto* vx = new DistributionPlot(controller_, "vxHistogram", "vx", this);
+    vx->setMinimumSize(340, 240);
+    tabifyDockWidget(
+        speed, addDock(vx, tr("v_x distribution"), "vxHistogramDock", Qt::RightDockWidgetArea, {"dsmc"}));
+    speed->raise();
     QDockWidget* previous = nullptr;
     for (const SeriesPlotSpec& spec : seriesPlotSpecs()) {
         auto* plot = new SeriesPlot(controller_, spec, this);
@@ -118,7 +125,7 @@ void MainWindow::modelChanged() {
         const QStringList kinds = dock->property("kinds").toStringList();
         const bool applies = kinds.isEmpty() || kinds.contains(kind);
         dock->toggleViewAction()->setEnabled(applies);
-        if (!applies && dock->isVisible()) {
+        if (!applies && !dock->isHidden()) {
             hiddenForScene_.insert(dock);
             dock->hide();
         } else if (applies && hiddenForScene_.remove(dock)) {

@@ -92,6 +92,10 @@ void MainWindow::createActions() {
     speed_->setValue(controller_->stepsPerFrame());
     speed_->setToolTip(tr("Signed speed: negative values run time backwards, 0 pauses ([ slower, ] faster)"));
     connect(speed_, &QSpinBox::valueChanged, controller_, &SimulationController::setStepsPerFrame);
+    connect(controller_, &SimulationController::stepsPerFrameChanged, speed_, [this](int n) {
+        const QSignalBlocker block(speed_); // the controller may refuse a value (no reverse for DSMC)
+        speed_->setValue(n);
+    });
     bar->addWidget(speed_);
     connect(menuAction(sim, tr("Slower"), Qt::Key_BracketLeft, tr("One step per frame less")),
             &QAction::triggered, speed_, [this] { speed_->stepDown(); });

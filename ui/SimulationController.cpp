@@ -28,6 +28,7 @@ QString SimulationController::load(const Preset& preset) {
     }
     model_ = std::move(next);
     pending_.clear();
+    if (stepsPerFrame_ < 0 && !model_->reversible()) setStepsPerFrame(-stepsPerFrame_);
     const auto values = model_->params();
     const auto it = values.find("dt");
     baseDt_ = it != values.end() ? std::abs(std::get<double>(it->second)) : 0.0;
@@ -61,8 +62,17 @@ void SimulationController::noteEdited() {
     emit edited();
 }
 
+bool SimulationController::runComplete() const {
+    return model_ && model_->plannedSteps() > 0 && model_->stepCount() >= model_->plannedSteps();
+}
+
 void SimulationController::play() {
     if (!model_ || model_->failure()) return;
+    if (runComplete()) {
+        emit notice(tr("The run is complete (%1 steps): Reset to run it again, or raise the run length.")
+                        .arg(model_->plannedSteps()));
+        return;
+    }
     rateClock_.start();
     stepsSinceClock_ = 0;
     timer_.start();
@@ -98,7 +108,13 @@ void SimulationController::reset() {
 
 void SimulationController::setStepsPerFrame(int n) {
     stepsPerFrame_ = std::clamp(n, -kMaxStepsPerFrame, kMaxStepsPerFrame);
+    if (stepsPerFrame_ < 0 && model_ && !model_->reversible()) {
+        stepsPerFrame_ = 0;
+        emit notice(
+            tr("This scene cannot run backwards: its collisions are random, so time has one direction."));
+    }
     applyDirection();
+    emit stepsPerFrameChanged(stepsPerFrame_);
 }
 
 void SimulationController::setHeatRate(double rate) {
@@ -106,7 +122,7 @@ void SimulationController::setHeatRate(double rate) {
 }
 
 void SimulationController::applyDirection() {
-    if (!model_ || baseDt_ == 0.0 || stepsPerFrame_ == 0) return;
+    if (!model_ || baseDt_ == 0.0 || stepsPerFrame_ == 0 || !model_->reversible()) return;
     const double signedDt = stepsPerFrame_ > 0 ? baseDt_ : -baseDt_;
     const auto values = model_->params();
     if (std::get<double>(values.at("dt")) != signedDt) model_->setParams({{"dt", signedDt}});
@@ -126,7 +142,10 @@ void SimulationController::advanceFrame() {
     if (!model_) return;
     if (heatRate_ != 0.0 && model_->tools() && model_->particleCount() > 0)
         model_->tools()->scaleKineticEnergy(std::exp(kHeatPerFrameAtFull * heatRate_));
-    const int steps = std::abs(stepsPerFrame_);
+    int steps = std::abs(stepsPerFrame_);
+    if (model_->plannedSteps() > 0)
+        steps = static_cast<int>(
+            std::clamp<std::int64_t>(model_->plannedSteps() - model_->stepCount(), 0, steps));
     for (int s = 0; s < steps && !model_->failure(); ++s) model_->step();
     stepsSinceClock_ += steps;
     if (rateClock_.isValid() && rateClock_.elapsed() > 500) {
@@ -142,6 +161,11 @@ void SimulationController::advanceFrame() {
     if (auto failure = model_->failure()) {
         pause();
         emit failed(QString::fromStdString(failure->message()));
+    } else if (isRunning() && runComplete()) {
+        if (framesSinceSample_ != 0) sample(); // the last step is always in the plots
+        framesSinceSample_ = 0;
+        pause();
+        emit notice(tr("Run complete: %1 steps.").arg(model_->stepCount()));
     }
 }
 

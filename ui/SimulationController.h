@@ -55,10 +55,13 @@ signals:
     void failed(const QString& message);
     void edited();
     void parametersChanged();
+    void stepsPerFrameChanged(int n);
+    void notice(const QString& message); // one line for the status bar
 
 private:
     void applyDirection();
     void restartSeries();
+    bool runComplete() const; // the model's planned run length is reached
 
     std::unique_ptr<Model> model_;
     SeriesStore series_;

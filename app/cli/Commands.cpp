@@ -19,6 +19,8 @@ namespace pl::cli {
 namespace {
 
 using Clock = std::chrono::steady_clock;
+constexpr long long kDefaultSteps = 1000;
+constexpr long long kDefaultEvery = 100;
 
 double secondsSince(Clock::time_point start) {
     return std::chrono::duration<double>(Clock::now() - start).count();
@@ -53,8 +55,9 @@ std::unique_ptr<Model> prepare(const std::string& name, const std::vector<std::s
     return instantiate(preset);
 }
 
-void writeText(const std::string& path, const std::string& text) {
-    if (!path.empty()) writeFileAtomically(path, text);
+// Writes what makeText returns to path; nothing is formatted when no file was asked for.
+template <class MakeText> void writeText(const std::string& path, MakeText makeText) {
+    if (!path.empty()) writeFileAtomically(path, makeText());
 }
 
 std::string particlesCsv(const Model& model) {
@@ -123,13 +126,16 @@ int runSimulation(const RunOptions& options) {
         return kBadInput;
     }
     try {
-        writeText(options.dumpInitial, particlesCsv(*model));
+        writeText(options.dumpInitial, [&] { return particlesCsv(*model); });
+        const long long planned = model->plannedSteps();
+        const long long steps = options.steps.value_or(planned > 0 ? planned : kDefaultSteps);
+        const long long every = options.every.value_or(planned > 0 ? 1 : kDefaultEvery);
         TimeSeries series(model->seriesColumns());
-        Progress progress(options.steps, !options.quiet);
+        Progress progress(steps, !options.quiet);
         series.append(model->sampleSeries());
-        for (long long s = 1; s <= options.steps && !model->failure(); ++s) {
+        for (long long s = 1; s <= steps && !model->failure(); ++s) {
             model->step();
-            if (s % options.every == 0 || s == options.steps) series.append(model->sampleSeries());
+            if (s % every == 0 || s == steps) series.append(model->sampleSeries());
             progress.update(s);
         }
         progress.finish();
@@ -137,10 +143,10 @@ int runSimulation(const RunOptions& options) {
         if (!options.out.empty()) {
             std::ostringstream csv;
             series.writeCsv(csv);
-            writeText(options.out, csv.str());
+            writeText(options.out, [&] { return csv.str(); });
         }
-        writeText(options.histogram, histogramsCsv(*model));
-        writeText(options.dumpFinal, particlesCsv(*model));
+        writeText(options.histogram, [&] { return histogramsCsv(*model); });
+        writeText(options.dumpFinal, [&] { return particlesCsv(*model); });
     } catch (const FileError& e) {
         std::cerr << "particlelab-cli: " << e.what() << "\n";
         return kCannotWrite;

@@ -19,9 +19,10 @@ struct RunOptions {
     std::string preset;            // built-in name or file path
     std::vector<std::string> sets; // "key=value"
     std::optional<std::uint64_t> seed;
-    int threads = 0; // 0: OpenMP's default
-    long long steps = 1000;
-    long long every = 100; // sample observables every this many steps
+    int threads = 0;                // 0: OpenMP's default
+    std::optional<long long> steps; // default: the preset's run length (DSMC), else 1000
+    std::optional<long long> every; // sample observables every this many steps; default: 1 for a run with
+                                    // a planned length (as the DSMC seed prints every step), else 100
     std::string out, histogram, dumpInitial, dumpFinal;
     bool quiet = false;
 };

@@ -13,14 +13,19 @@ int main(int argc, char** argv) {
     RunOptions run;
     auto* runCmd = app.add_subcommand("run", "Run a preset and write observables as CSV");
     runCmd->add_option("preset", run.preset, "Built-in preset name or preset file")->required();
-    runCmd->add_option("--steps", run.steps, "Number of steps")->check(CLI::NonNegativeNumber);
+    runCmd->add_option("--steps", run.steps, "Number of steps (default: the preset's run length, else 1000)")
+        ->check(CLI::NonNegativeNumber);
     runCmd->add_option("--set", run.sets, "Override a parameter: key=value (repeatable)");
     runCmd->add_option("--seed", run.seed, "Random seed (default: the preset's)");
     runCmd->add_option("--threads", run.threads, "OpenMP threads (default: all cores)")
         ->check(CLI::NonNegativeNumber);
-    runCmd->add_option("--every", run.every, "Sample observables every K steps")->check(CLI::PositiveNumber);
+    runCmd
+        ->add_option("--every", run.every,
+                     "Sample observables every K steps (default: every step of a preset with a run "
+                     "length, else 100)")
+        ->check(CLI::PositiveNumber);
     runCmd->add_option("--out", run.out, "Time series CSV");
-    runCmd->add_option("--histogram", run.histogram, "Final speed histogram CSV");
+    runCmd->add_option("--histogram", run.histogram, "Final histograms CSV (speed; v_x for DSMC)");
     runCmd->add_option("--dump-initial", run.dumpInitial, "Initial particles CSV (id,species,x,y,vx,vy)");
     runCmd->add_option("--dump-final", run.dumpFinal, "Final particles CSV (id,species,x,y,vx,vy)");
     runCmd->add_flag("--quiet", run.quiet, "No progress line");

@@ -2,6 +2,7 @@
 #include "ModelCatalog.h"
 
 #include "common/EmbeddedFiles.h"
+#include "dsmc/DsmcModel.h"
 #include "md/MdModel.h"
 
 #include <filesystem>
@@ -14,7 +15,8 @@ constexpr std::string_view kPresetSuffix = ".json";
 } // namespace
 
 const std::vector<ModelInfo>& modelCatalog() {
-    static const std::vector<ModelInfo> list{{"gas", "Gas (molecular dynamics)", &MdParams::describe()}};
+    static const std::vector<ModelInfo> list{{"gas", "Gas (molecular dynamics)", &MdParams::describe()},
+                                             {"dsmc", "Rarefied gas (DSMC)", &DsmcParams::describe()}};
     return list;
 }
 
@@ -26,6 +28,7 @@ const std::vector<ParamSpec>* specsForModel(const std::string& kind) {
 
 std::unique_ptr<Model> createModel(const std::string& kind) {
     if (kind == "gas") return std::make_unique<MdModel>();
+    if (kind == "dsmc") return std::make_unique<DsmcModel>();
     return nullptr;
 }
 

@@ -42,6 +42,32 @@ bool isHexColor(const std::string& s) {
 
 } // namespace
 
+ParamSpec makeSpec(std::string key, std::string label, std::string unit, std::string group,
+                   std::string tooltip, double min, double max, double step, ParamValue defaultValue,
+                   bool appliesLive) {
+    ParamSpec s;
+    s.key = std::move(key);
+    s.label = std::move(label);
+    s.unit = std::move(unit);
+    s.group = std::move(group);
+    s.tooltip = std::move(tooltip);
+    s.min = min;
+    s.max = max;
+    s.step = step;
+    s.defaultValue = std::move(defaultValue);
+    s.appliesLive = appliesLive;
+    return s;
+}
+
+ParamSpec makeChoice(std::string key, std::string label, std::string group, std::string tooltip,
+                     std::vector<std::string> choices, bool appliesLive) {
+    ParamSpec s = makeSpec(std::move(key), std::move(label), "", std::move(group), std::move(tooltip), 0, 0,
+                           0, choices.front(), appliesLive);
+    s.kind = ParamKind::Choice;
+    s.choices = std::move(choices);
+    return s;
+}
+
 std::string describeAllowed(const ParamSpec& spec) {
     switch (spec.kind) {
     case ParamKind::Real:

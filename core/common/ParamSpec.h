@@ -44,6 +44,14 @@ private:
     std::string key_;
 };
 
+// A Real spec (models turn it into Integer or Boolean through the bind* helpers below).
+ParamSpec makeSpec(std::string key, std::string label, std::string unit, std::string group,
+                   std::string tooltip, double min, double max, double step, ParamValue defaultValue,
+                   bool appliesLive = false);
+// A Choice spec; the first choice is the default.
+ParamSpec makeChoice(std::string key, std::string label, std::string group, std::string tooltip,
+                     std::vector<std::string> choices, bool appliesLive = false);
+
 // "[1e-06, 1000] M" or "one of: a, b, c" — used in every error message about a value.
 std::string describeAllowed(const ParamSpec& spec);
 

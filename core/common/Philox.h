@@ -42,6 +42,7 @@ enum class RngPurpose : std::uint32_t {
     ThermalWall = 3,
     Spawn = 4,
     Shuffle = 5,
+    Collision = 6,
 };
 
 // Four independent words for (seed, purpose, subject, sequence). subject is usually a particle id and

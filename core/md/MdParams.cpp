@@ -17,33 +17,10 @@ constexpr double kMaxDisks =
     1
     << 26; // upper bound of every count field (67 M)  // SoA state, accumulators, cell list and sorted copies
 
-ParamSpec spec(std::string key, std::string label, std::string unit, std::string group, std::string tooltip,
-               double min, double max, double step, ParamValue def, bool live = false) {
-    ParamSpec s;
-    s.key = std::move(key);
-    s.label = std::move(label);
-    s.unit = std::move(unit);
-    s.group = std::move(group);
-    s.tooltip = std::move(tooltip);
-    s.min = min;
-    s.max = max;
-    s.step = step;
-    s.defaultValue = std::move(def);
-    s.appliesLive = live;
-    return s;
-}
-
-ParamSpec choice(std::string key, std::string label, std::string group, std::string tooltip,
-                 std::vector<std::string> choices, bool live = false) {
-    ParamSpec s = spec(key, label, "", group, tooltip, 0, 0, 0, choices.front(), live);
-    s.kind = ParamKind::Choice;
-    s.choices = std::move(choices);
-    return s;
-}
-
 ParamSpec color(std::string key, std::string label, std::string group, std::string def) {
-    ParamSpec s = spec(key, label, "", group, "Colour of this species when disks are coloured by species.", 0,
-                       0, 0, std::move(def), true);
+    ParamSpec s =
+        makeSpec(key, label, "", group, "Colour of this species when disks are coloured by species.", 0, 0, 0,
+                 std::move(def), true);
     s.kind = ParamKind::Color;
     return s;
 }
@@ -77,16 +54,16 @@ void addSpecies(std::vector<ParamField<MdParams>>& f, MdSpeciesParams MdParams::
     const std::string key = name == "A" ? "a" : "b";
     const std::string group = "Species " + name;
     f.push_back(speciesField(member, &MdSpeciesParams::count,
-                             spec("count_" + key, "Disks (" + name + ")", "", group,
-                                  "Number of disks of species " + name + "; " + countNote, 0, kMaxDisks, 1,
-                                  double(d.count))));
+                             makeSpec("count_" + key, "Disks (" + name + ")", "", group,
+                                      "Number of disks of species " + name + "; " + countNote, 0, kMaxDisks,
+                                      1, double(d.count))));
     f.push_back(speciesField(member, &MdSpeciesParams::mass,
-                             spec("mass_" + key, "Mass (" + name + ")", "M", group,
-                                  "Mass of one " + name + " disk.", 1e-6, 1e6, 0.1, d.mass)));
+                             makeSpec("mass_" + key, "Mass (" + name + ")", "M", group,
+                                      "Mass of one " + name + " disk.", 1e-6, 1e6, 0.1, d.mass)));
     f.push_back(speciesField(member, &MdSpeciesParams::diameter,
-                             spec("diameter_" + key, "Diameter (" + name + ")", "L", group,
-                                  "Contact diameter of one " + name + " disk." + diameterNote, 1e-6, 1e3,
-                                  0.001, d.diameter)));
+                             makeSpec("diameter_" + key, "Diameter (" + name + ")", "L", group,
+                                      "Contact diameter of one " + name + " disk." + diameterNote, 1e-6, 1e3,
+                                      0.001, d.diameter)));
     f.push_back(speciesField(member, &MdSpeciesParams::color,
                              color("color_" + key, "Colour (" + name + ")", group, d.color)));
 }
@@ -95,83 +72,88 @@ std::vector<ParamField<MdParams>> makeFields() {
     using P = MdParams;
     const MdParams d;
     std::vector<ParamField<P>> f;
-    f.push_back(bindReal(&P::boxWidth, spec("box_width", "Box width", "L", "Box",
-                                            "Width of the container; the seed's box is 2 wide.", 1e-3, 1e5,
-                                            0.1, d.boxWidth)));
-    f.push_back(bindReal(&P::boxHeight, spec("box_height", "Box height", "L", "Box",
-                                             "Height of the container; the seed's box is 2 high.", 1e-3, 1e5,
-                                             0.1, d.boxHeight)));
+    f.push_back(bindReal(&P::boxWidth, makeSpec("box_width", "Box width", "L", "Box",
+                                                "Width of the container; the seed's box is 2 wide.", 1e-3,
+                                                1e5, 0.1, d.boxWidth)));
+    f.push_back(bindReal(&P::boxHeight, makeSpec("box_height", "Box height", "L", "Box",
+                                                 "Height of the container; the seed's box is 2 high.", 1e-3,
+                                                 1e5, 0.1, d.boxHeight)));
     addSpecies(f, &P::a, "A", d.a, "the seed has 4096.", " The seed uses 0.01.");
     addSpecies(f, &P::b, "B", d.b, "0 for a one-species gas.", "");
-    f.push_back(bindReal(
-        &P::stiffness, spec("stiffness", "Stiffness k", "M/T²", "Interaction",
-                            "Spring constant of the harmonic repulsion U = k/2 (d − r)²; the seed uses 1000.",
-                            1e-6, 1e12, 100, d.stiffness, true)));
     f.push_back(
-        bindText(&P::initVelocity, choice("init_velocity", "Initial velocities", "Initial state",
-                                          "fixed-speed: every disk at init_speed in a random direction (the "
-                                          "seed); maxwell-boltzmann: Gaussian components at init_kT.",
-                                          {"fixed-speed", "maxwell-boltzmann"})));
-    f.push_back(bindReal(&P::initSpeed, spec("init_speed", "Initial speed", "L/T", "Initial state",
-                                             "Speed of every disk for fixed-speed starts; the seed uses 1.",
-                                             0, 1e6, 0.1, d.initSpeed)));
-    f.push_back(bindReal(&P::initKT, spec("init_kT", "Initial kT", "M·L²/T²", "Initial state",
-                                          "Temperature of maxwell-boltzmann starts and of spawned disks.", 0,
-                                          1e12, 0.1, d.initKT, true)));
+        bindReal(&P::stiffness,
+                 makeSpec("stiffness", "Stiffness k", "M/T²", "Interaction",
+                          "Spring constant of the harmonic repulsion U = k/2 (d − r)²; the seed uses 1000.",
+                          1e-6, 1e12, 100, d.stiffness, true)));
+    f.push_back(bindText(&P::initVelocity,
+                         makeChoice("init_velocity", "Initial velocities", "Initial state",
+                                    "fixed-speed: every disk at init_speed in a random direction (the "
+                                    "seed); maxwell-boltzmann: Gaussian components at init_kT.",
+                                    {"fixed-speed", "maxwell-boltzmann"})));
+    f.push_back(
+        bindReal(&P::initSpeed, makeSpec("init_speed", "Initial speed", "L/T", "Initial state",
+                                         "Speed of every disk for fixed-speed starts; the seed uses 1.", 0,
+                                         1e6, 0.1, d.initSpeed)));
+    f.push_back(bindReal(&P::initKT, makeSpec("init_kT", "Initial kT", "M·L²/T²", "Initial state",
+                                              "Temperature of maxwell-boltzmann starts and of spawned disks.",
+                                              0, 1e12, 0.1, d.initKT, true)));
     f.push_back(bindText(
         &P::initPlacement,
-        choice(
+        makeChoice(
             "init_placement", "Initial placement", "Initial state",
             "random: uniform positions, overlaps allowed (the seed); lattice: a square lattice, no overlaps.",
             {"random", "lattice"})));
-    f.push_back(bindText(&P::integrator,
-                         choice("integrator", "Integrator", "Integration",
-                                "Time-stepping method; velocity Verlet is symplectic and time-reversible.",
-                                MdParams::integratorNames(), true)));
+    f.push_back(bindText(
+        &P::integrator, makeChoice("integrator", "Integrator", "Integration",
+                                   "Time-stepping method; velocity Verlet is symplectic and time-reversible.",
+                                   MdParams::integratorNames(), true)));
     ParamSpec dt =
-        spec("dt", "Time step", "T", "Integration",
-             "Signed step; negative runs time backwards. The seed uses 1e-4.", -1, 1, 1e-5, d.dt, true);
+        makeSpec("dt", "Time step", "T", "Integration",
+                 "Signed step; negative runs time backwards. The seed uses 1e-4.", -1, 1, 1e-5, d.dt, true);
     dt.nonZero = true;
     f.push_back(bindReal(&P::dt, dt));
+    f.push_back(bindText(
+        &P::forceMethod,
+        makeChoice("force_method", "Force search", "Integration",
+                   "cell-list: O(N) neighbour search; all-pairs: the seed's O(N²) loop, for comparison.",
+                   {"cell-list", "all-pairs"}, true)));
     f.push_back(
-        bindText(&P::forceMethod,
-                 choice("force_method", "Force search", "Integration",
-                        "cell-list: O(N) neighbour search; all-pairs: the seed's O(N²) loop, for comparison.",
-                        {"cell-list", "all-pairs"}, true)));
+        bindReal(&P::gravity, makeSpec("gravity", "Gravity", "L/T²", "Walls and fields",
+                                       "Downward acceleration; 0 for none.", 0, 1e6, 0.1, d.gravity, true)));
+    f.push_back(bindBool(&P::pistonEnabled, makeSpec("piston_enabled", "Piston", "", "Walls and fields",
+                                                     "Replace the right wall by a movable piston.", 0, 0, 0,
+                                                     d.pistonEnabled, true)));
+    f.push_back(bindReal(&P::pistonX, makeSpec("piston_x", "Piston position", "L", "Walls and fields",
+                                               "x of the piston; moving it compresses or expands the gas.",
+                                               -5e4, 5e4, 0.01, d.pistonX, true)));
     f.push_back(
-        bindReal(&P::gravity, spec("gravity", "Gravity", "L/T²", "Walls and fields",
-                                   "Downward acceleration; 0 for none.", 0, 1e6, 0.1, d.gravity, true)));
-    f.push_back(bindBool(&P::pistonEnabled, spec("piston_enabled", "Piston", "", "Walls and fields",
-                                                 "Replace the right wall by a movable piston.", 0, 0, 0,
-                                                 d.pistonEnabled, true)));
-    f.push_back(bindReal(&P::pistonX, spec("piston_x", "Piston position", "L", "Walls and fields",
-                                           "x of the piston; moving it compresses or expands the gas.", -5e4,
-                                           5e4, 0.01, d.pistonX, true)));
-    f.push_back(bindText(&P::wallMode, choice("wall_mode", "Walls", "Walls and fields",
-                                              "reflecting: elastic walls; thermal: disks leave a wall with "
-                                              "velocities drawn at wall_kT (heating or cooling).",
-                                              {"reflecting", "thermal"}, true)));
-    f.push_back(bindReal(&P::wallKT, spec("wall_kT", "Wall kT", "M·L²/T²", "Walls and fields",
-                                          "Temperature of thermal walls.", 0, 1e12, 0.05, d.wallKT, true)));
-    f.push_back(bindInteger(&P::maxParticles, spec("max_particles", "Particle cap", "", "Limits",
-                                                   "Most disks the scene may hold; spawning stops here.", 1,
-                                                   kMaxDisks, 1000, double(d.maxParticles), true)));
+        bindText(&P::wallMode, makeChoice("wall_mode", "Walls", "Walls and fields",
+                                          "reflecting: elastic walls; thermal: disks leave a wall with "
+                                          "velocities drawn at wall_kT (heating or cooling).",
+                                          {"reflecting", "thermal"}, true)));
+    f.push_back(
+        bindReal(&P::wallKT, makeSpec("wall_kT", "Wall kT", "M·L²/T²", "Walls and fields",
+                                      "Temperature of thermal walls.", 0, 1e12, 0.05, d.wallKT, true)));
+    f.push_back(bindInteger(&P::maxParticles, makeSpec("max_particles", "Particle cap", "", "Limits",
+                                                       "Most disks the scene may hold; spawning stops here.",
+                                                       1, kMaxDisks, 1000, double(d.maxParticles), true)));
     f.push_back(bindReal(
         &P::spawnMaxOverlap,
-        spec("spawn_max_overlap", "Spawn overlap limit", "d", "Limits",
-             "A spawned disk overlapping another by more than this fraction of a diameter is refused.", 0, 1,
-             0.05, d.spawnMaxOverlap, true)));
-    f.push_back(bindInteger(&P::histogramBins,
-                            spec("histogram_bins", "Histogram bins", "", "Observation",
-                                 "Bins of the speed histogram.", 5, 1000, 5, double(d.histogramBins), true)));
+        makeSpec("spawn_max_overlap", "Spawn overlap limit", "d", "Limits",
+                 "A spawned disk overlapping another by more than this fraction of a diameter is refused.", 0,
+                 1, 0.05, d.spawnMaxOverlap, true)));
+    f.push_back(bindInteger(&P::histogramBins, makeSpec("histogram_bins", "Histogram bins", "", "Observation",
+                                                        "Bins of the speed histogram.", 5, 1000, 5,
+                                                        double(d.histogramBins), true)));
     f.push_back(
-        bindReal(&P::pressureWindow, spec("pressure_window", "Pressure window", "T", "Observation",
-                                          "Time over which wall impulses are averaged into a pressure.", 1e-9,
-                                          1e9, 0.1, d.pressureWindow, true)));
-    f.push_back(bindReal(&P::blowupEnergyFactor,
-                         spec("blowup_energy_factor", "Blow-up factor", "", "Observation",
-                              "The run stops when the total energy exceeds this multiple of its reference.",
-                              1.5, 1e12, 10, d.blowupEnergyFactor, true)));
+        bindReal(&P::pressureWindow, makeSpec("pressure_window", "Pressure window", "T", "Observation",
+                                              "Time over which wall impulses are averaged into a pressure.",
+                                              1e-9, 1e9, 0.1, d.pressureWindow, true)));
+    f.push_back(
+        bindReal(&P::blowupEnergyFactor,
+                 makeSpec("blowup_energy_factor", "Blow-up factor", "", "Observation",
+                          "The run stops when the total energy exceeds this multiple of its reference.", 1.5,
+                          1e12, 10, d.blowupEnergyFactor, true)));
     return f;
 }
 

@@ -35,7 +35,29 @@ private slots:
     void listShowsBuiltins() {
         const auto r = cli({"list"});
         QCOMPARE(r.exitCode, 0);
-        for (const char* name : {"gas-seed", "gas-classroom", "gas-mixture"}) QVERIFY(r.out.contains(name));
+        for (const char* name :
+             {"gas-seed", "gas-classroom", "gas-mixture", "dsmc-seed", "dsmc-bkw", "dsmc-maxwell-relax"})
+            QVERIFY(r.out.contains(name));
+    }
+
+    void dsmcSeedRunsItsPlannedLengthAndPrintsTheSeedsColumns() {
+        QTemporaryDir dir;
+        const QString series = dir.filePath("s.csv"), hist = dir.filePath("h.csv");
+        const auto r = cli({"run", "dsmc-seed", "--out", series, "--histogram", hist, "--quiet"});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        const QStringList rows = readLines(series);
+        QCOMPARE(rows.size(), 1 + 501); // the seed's 500 steps, every one sampled, plus the start
+        const QStringList header = rows[0].split(',');
+        for (const char* column : {"step", "time", "particles", "Tx", "Ty", "Tz", "T", "ux", "kurtosis_vx",
+                                   "ng", "nc", "sigma_cr_max", "M4", "M6", "M8"})
+            QVERIFY2(header.contains(column), column);
+        const QStringList last = rows.last().split(',');
+        QCOMPARE(last[header.indexOf("step")], QString("500"));
+        QVERIFY(std::abs(last[header.indexOf("T")].toDouble() - 17.83) < 0.005);
+        QVERIFY(std::abs(last[header.indexOf("ux")].toDouble() - 200.0) < 1e-9);
+        const QStringList bins = readLines(hist);
+        QCOMPARE(bins.filter(QRegularExpression("^speed,")).size(), 25); // the seed's 0–450 m/s in 25 bins
+        QCOMPARE(bins.filter(QRegularExpression("^vx,")).size(), 50);
     }
 
     void runWritesEveryFile() {

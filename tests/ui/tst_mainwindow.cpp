@@ -270,6 +270,40 @@ private slots:
         QVERIFY2(after > 1.2 * before, qPrintable(QString("%1 → %2").arg(before).arg(after)));
     }
 
+    void dsmcSceneRunsItsCourseForwardOnly() {
+        ui::MainWindow window;
+        QVERIFY(window.openPreset("dsmc-bkw"));
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        // Only the docks with data for this scene show; the gas's energy dock is hidden, not lost.
+        QVERIFY(!window.findChild<QDockWidget*>("momentsPlotDock")->isHidden());
+        QVERIFY(window.findChild<QDockWidget*>("energyPlotDock")->isHidden());
+        QVERIFY(!window.findChild<QDockWidget*>("energyPlotDock")->toggleViewAction()->isEnabled());
+        auto* controller = window.controller();
+        QSignalSpy notices(controller, &ui::SimulationController::notice);
+        controller->setStepsPerFrame(-5); // stochastic collisions: no way back
+        QCOMPARE(controller->stepsPerFrame(), 0);
+        QCOMPARE(notices.count(), 1);
+        controller->setStepsPerFrame(10);
+        controller->play();
+        for (int f = 0; f < 100; ++f) controller->advanceFrame(); // 1000 steps asked, 800 planned
+        QCOMPARE(controller->model()->stepCount(), 800LL);
+        QVERIFY(!controller->isRunning());
+        // The moments dock drew the measured and the exact BKW curves.
+        ui::SeriesPlot* moments = nullptr;
+        for (ui::SeriesPlot* plot : window.seriesPlots())
+            if (plot->spec().objectName == "momentsPlot") moments = plot;
+        QVERIFY(moments);
+        int visible = 0;
+        for (int g = 0; g < moments->plot()->graphCount(); ++g)
+            visible += moments->plot()->graph(g)->visible();
+        QCOMPARE(visible, 7); // M4, M6, M8, their exact curves, and the KL divergence
+
+        QVERIFY(window.openPreset("gas-seed")); // back to the gas: its docks return
+        QVERIFY(!window.findChild<QDockWidget*>("energyPlotDock")->isHidden());
+        QVERIFY(window.findChild<QDockWidget*>("momentsPlotDock")->isHidden());
+    }
+
     void dockLayoutPersists() {
         {
             ui::MainWindow window;

@@ -30,8 +30,9 @@ double DistributionPlot::Sample::at(double x) const {
 }
 
 DistributionPlot::DistributionPlot(SimulationController* controller, const QString& objectName,
-                                   QWidget* parent)
-    : QWidget(parent), controller_(controller), plot_(new QCustomPlot(this)), window_(new QSpinBox(this)) {
+                                   const QString& namePrefix, QWidget* parent)
+    : QWidget(parent), controller_(controller), prefix_(namePrefix.toStdString()),
+      plot_(new QCustomPlot(this)), window_(new QSpinBox(this)) {
     plot_->setObjectName(objectName);
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
@@ -69,7 +70,9 @@ void DistributionPlot::setAveragingWindow(int samples) {
 void DistributionPlot::refresh() {
     Model* model = controller_->model();
     if (!model) return;
-    latest_ = model->histograms();
+    latest_.clear();
+    for (auto& h : model->histograms())
+        if (h.name.starts_with(prefix_)) latest_.push_back(std::move(h));
     history_.resize(latest_.size());
     for (std::size_t h = 0; h < latest_.size(); ++h) {
         const Histogram& counts = latest_[h].counts;

@@ -21,7 +21,9 @@ class SimulationController;
 class DistributionPlot : public QWidget {
     Q_OBJECT
 public:
-    DistributionPlot(SimulationController* controller, const QString& objectName, QWidget* parent = nullptr);
+    // Shows the model's histograms whose name starts with namePrefix ("speed", "vx").
+    DistributionPlot(SimulationController* controller, const QString& objectName, const QString& namePrefix,
+                     QWidget* parent = nullptr);
     // Takes the model's current histograms as the newest sample and redraws.
     void refresh();
     QCustomPlot* plot() const { return plot_; }
@@ -40,6 +42,7 @@ private:
     };
 
     SimulationController* controller_;
+    std::string prefix_;
     QCustomPlot* plot_;
     QCPTextElement* title_;
     QSpinBox* window_;

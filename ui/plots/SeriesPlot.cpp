@@ -43,7 +43,7 @@ void SeriesPlot::addPanel(QCPAxisRect* rect, const SeriesPanel& panel) {
         if (column < 0) continue;
         QCPGraph* graph = plot_->addGraph(rect->axis(QCPAxis::atBottom), rect->axis(QCPAxis::atLeft));
         graph->setName(curve.label);
-        graph->setPen(QPen(curve.colour, 1.6));
+        graph->setPen(QPen(curve.colour, 1.6, curve.style));
         graph->addToLegend(legend);
         bound_.push_back({plot_->graphCount() - 1, column, curve.label, legend});
     }

@@ -19,6 +19,7 @@ struct SeriesCurve {
     QString column; // the model's series column
     QString label;  // legend text
     QColor colour;
+    Qt::PenStyle style = Qt::SolidLine; // dashed for exact theory curves beside measured ones
 };
 
 struct SeriesPanel {

@@ -65,8 +65,11 @@ private slots:
         QTemporaryDir dir;
         for (const auto& builtin : builtinPresets()) {
             Preset p = builtin.preset;
-            p.obstacles.push_back({Obstacle::Shape::Disc, 0.1, -0.2, 0.15});
-            p.obstacles.push_back({Obstacle::Shape::Box, -0.3, 0.4, 0.1, 0.2, 0.05});
+            const bool hasObstacles = createModel(p.model)->tools() != nullptr; // a DSMC cell has none
+            if (hasObstacles) {
+                p.obstacles.push_back({Obstacle::Shape::Disc, 0.1, -0.2, 0.15});
+                p.obstacles.push_back({Obstacle::Shape::Box, -0.3, 0.4, 0.1, 0.2, 0.05});
+            }
             const auto* specs = specsForModel(p.model);
             const std::string path =
                 dir.filePath(QString::fromStdString(builtin.name + ".json")).toStdString();
@@ -76,7 +79,7 @@ private slots:
             QCOMPARE(back.seed, p.seed);
             QCOMPARE(back.description, p.description);
             QCOMPARE(back.obstacles.size(), p.obstacles.size());
-            QCOMPARE(back.obstacles[1].halfHeight, 0.05);
+            if (hasObstacles) QCOMPARE(back.obstacles[1].halfHeight, 0.05);
             // Every parameter written, equal to what the model runs with.
             auto a = instantiate(p), b = instantiate(back);
             QVERIFY(a->params() == b->params());

@@ -1,0 +1,34 @@
+// CollisionModel: prefactors of the four models.
+#include "DsmcCollisionModel.h"
+
+#include <numbers>
+
+namespace pl {
+
+CollisionModel CollisionModel::fromParams(const DsmcParams& p) {
+    CollisionModel m;
+    if (p.crossSection == "seed") {
+        m = {Kind::Seed, 1e-18, 0.75}; // σ = 1e-18 c_r^-1/2 m², as the seed writes it
+    } else if (p.crossSection == "hard-sphere") {
+        m = {Kind::HardSphere, std::numbers::pi * p.diameter * p.diameter, 0.5};
+    } else if (p.crossSection == "maxwell") {
+        m = {Kind::Maxwell, p.maxwellSigmaCr, 1.0};
+    } else {
+        // Bird (1994) eq. 4.63: σ = π d_ref² (2 k T_ref / (m_r c_r²))^(ω − 1/2) / Γ(5/2 − ω), m_r = m/2.
+        const double w = p.vhsOmega;
+        const double reference = 4.0 * kBoltzmann * p.vhsTref / p.mass();
+        m = {Kind::Vhs,
+             std::numbers::pi * p.vhsDiameter * p.vhsDiameter * std::pow(reference, w - 0.5) /
+                 std::tgamma(2.5 - w),
+             w};
+    }
+    return m;
+}
+
+double CollisionModel::meanSigmaCr(double temperature, double mass) const {
+    const double p = 2.0 - 2.0 * omega; // exponent of c_r in σ c_r
+    const double scale = 4.0 * kBoltzmann * temperature / mass;
+    return prefactor * std::pow(scale, 0.5 * p) * std::tgamma(0.5 * (3.0 + p)) / std::tgamma(1.5);
+}
+
+} // namespace pl

@@ -1,0 +1,40 @@
+// The interchangeable piece of the NTC method: σ c_r as a function of the relative speed. Every model
+// here is a power law σ c_r = A c_r^(2 − 2ω) (physics.md §2): the seed's σ = 1e-18 c_r^-1/2 is ω = 3/4,
+// hard spheres ω = 1/2, Maxwell molecules ω = 1, and VHS any ω with A from (d_ref, T_ref).
+#pragma once
+
+#include "DsmcParams.h"
+
+#include <cmath>
+
+namespace pl {
+
+struct CollisionModel {
+    enum class Kind { Seed, HardSphere, Vhs, Maxwell };
+    Kind kind = Kind::Seed;
+    double prefactor = 1e-18; // A [m^(2ω+1) s^(2ω−2)]
+    double omega = 0.75;
+
+    static CollisionModel fromParams(const DsmcParams& p);
+
+    // σ c_r [m³/s]. The common exponents get exact fast paths; pow only for a general VHS ω.
+    double sigmaCr(double cr) const {
+        switch (kind) {
+        case Kind::Seed:
+            return prefactor * std::sqrt(cr);
+        case Kind::HardSphere:
+            return prefactor * cr;
+        case Kind::Maxwell:
+            return prefactor;
+        case Kind::Vhs:
+            return prefactor * std::pow(cr, 2.0 - 2.0 * omega);
+        }
+        return 0.0;
+    }
+
+    // Equilibrium ⟨σ c_r⟩ at temperature T for molecules of mass m: the relative speed is Maxwellian
+    // with reduced mass m/2, so ⟨c_r^p⟩ = (4kT/m)^(p/2) Γ((3+p)/2) / Γ(3/2).
+    double meanSigmaCr(double temperature, double mass) const;
+};
+
+} // namespace pl

@@ -1,0 +1,171 @@
+// DsmcModel: parameters, reset and the NTC step.
+#include "DsmcModel.h"
+
+#include "common/Philox.h"
+
+#include <cmath>
+#include <sstream>
+
+namespace pl {
+
+DsmcModel::DsmcModel() {
+    reset();
+}
+
+ParamValues DsmcModel::params() const {
+    return valuesOf(params_, DsmcParams::fields());
+}
+
+void DsmcModel::setParams(const ParamValues& values) {
+    DsmcParams next = withValues(params_, DsmcParams::fields(), values);
+    next.validate();
+    params_ = next;
+    collisions_ = CollisionModel::fromParams(params_);
+}
+
+void DsmcModel::reset(const Preset& preset) {
+    if (preset.model != kind())
+        throw PresetError("model", "preset is for model '" + preset.model + "', not dsmc");
+    if (!preset.obstacles.empty()) throw PresetError("obstacles", "a DSMC cell has no obstacles");
+    DsmcParams next;
+    try {
+        next = withValues(DsmcParams{}, DsmcParams::fields(), preset.params);
+        next.validate();
+    } catch (const ParamError& e) {
+        throw PresetError("params." + e.key(), e.what());
+    }
+    params_ = next;
+    seed_ = preset.seed;
+    reset();
+}
+
+void DsmcModel::reset() {
+    collisions_ = CollisionModel::fromParams(params_);
+    step_ = 0;
+    time_ = 0.0;
+    remainder_ = 0.0;
+    candidates_ = collisionsThisStep_ = collisionsTotal_ = 0;
+    failure_.reset();
+    buildInitialState();
+    if (params_.sigmaCrMaxInit > 0)
+        sigmaCrMax_ = params_.sigmaCrMaxInit;
+    else
+        estimateSigmaCrMax();
+}
+
+Preset DsmcModel::toPreset() const {
+    Preset p;
+    p.model = kind();
+    p.seed = seed_;
+    p.params = params();
+    return p;
+}
+
+double DsmcModel::numberDensity() const {
+    return static_cast<double>(state_.size()) * params_.fn / params_.cellVolume;
+}
+
+void DsmcModel::estimateSigmaCrMax() {
+    // Bird's practice: start from a generous guess and let the running maximum correct it. The guess is
+    // the largest σ c_r among a sample of pairs of the initial state, so the first steps neither
+    // over-collide (a guess too low accepts every pair) nor waste candidates.
+    const auto n = static_cast<std::uint32_t>(state_.size());
+    sigmaCrMax_ = 0.0;
+    constexpr std::uint32_t kSamplePairs = 4096;
+    for (std::uint32_t k = 0; k < kSamplePairs && n >= 2; ++k) {
+        const Philox4x32 w = randomWords(seed_, RngPurpose::Collision, 0xffffffffu, k);
+        const std::uint32_t i = dsmc::randomIndex(w[0], n);
+        std::uint32_t j = dsmc::randomIndex(w[1], n - 1);
+        if (j >= i) ++j;
+        sigmaCrMax_ = std::max(
+            sigmaCrMax_, collisions_.sigmaCr(dsmc::relativeSpeed(state_.velocity(i), state_.velocity(j))));
+    }
+    if (!(sigmaCrMax_ > 0))
+        sigmaCrMax_ = collisions_.meanSigmaCr(std::max(params_.temperature, 1.0), params_.mass());
+}
+
+void DsmcModel::step() {
+    if (failure_) return;
+    const auto n = static_cast<std::uint32_t>(state_.size());
+    const double dt = params_.dt;
+    // NTC candidates (physics.md §2, Bird 1994 eq. 11.3): ½ N (N − 1) F_N (σ c_r)_max Δt / V_c, the
+    // fractional part carried to the next step so the long-run rate has no rounding bias.
+    const double wanted =
+        0.5 * n * (n - 1.0) * params_.fn * sigmaCrMax_ * dt / params_.cellVolume + remainder_;
+    if (!std::isfinite(wanted) || wanted > 1e12) {
+        failure_ = ModelFailure{
+            "the candidate count " + std::to_string(wanted) + " is not finite or too large", step_, time_,
+            "lower dt, fn or the number of particles, or raise cell_volume; ν Δt should stay "
+            "well below 1"};
+        return;
+    }
+    candidates_ = static_cast<long long>(wanted);
+    remainder_ = wanted - static_cast<double>(candidates_);
+    collisionsThisStep_ = 0;
+    const double m = params_.mass();
+    const auto stream = static_cast<std::uint32_t>(step_);
+    for (long long c = 0; c < candidates_; ++c) {
+        const Philox4x32 w =
+            randomWords(seed_, RngPurpose::Collision, stream, 2 * static_cast<std::uint64_t>(c));
+        // A random distinct pair.
+        const std::uint32_t i = dsmc::randomIndex(w[0], n);
+        std::uint32_t j = dsmc::randomIndex(w[1], n - 1);
+        if (j >= i) ++j;
+        dsmc::Velocity a = state_.velocity(i), b = state_.velocity(j);
+        const double sigmaCr = collisions_.sigmaCr(dsmc::relativeSpeed(a, b));
+        // Bird raises (σ c_r)_max as soon as a pair exceeds it; that pair is then accepted.
+        if (sigmaCr > sigmaCrMax_) sigmaCrMax_ = sigmaCr;
+        if (unitOpen32(w[2]) * sigmaCrMax_ >= sigmaCr) continue;
+        const Philox4x32 angles =
+            randomWords(seed_, RngPurpose::Collision, stream, 2 * static_cast<std::uint64_t>(c) + 1);
+        dsmc::scatterIsotropic(a, b, m, m, unitOpen(angles[0], angles[1]), unitOpen(angles[2], angles[3]));
+        state_.setVelocity(i, a);
+        state_.setVelocity(j, b);
+        ++collisionsThisStep_;
+    }
+    collisionsTotal_ += collisionsThisStep_;
+    ++step_;
+    time_ += dt;
+}
+
+void DsmcModel::writeParticles(std::ostream& out) const {
+    const auto precision = out.precision(17);
+    out << "id,origin,vx,vy,vz\n";
+    for (std::size_t i = 0; i < state_.size(); ++i)
+        out << i << ',' << int(state_.origin[i]) << ',' << state_.vx[i] << ',' << state_.vy[i] << ','
+            << state_.vz[i] << '\n';
+    out.precision(precision);
+}
+
+SceneView DsmcModel::sceneView() const {
+    // A 0D cell has no positions worth drawing: the particles are points in velocity space (v_x, v_y).
+    SceneView view;
+    const double half = params_.histSpeedMax;
+    view.left = view.bottom = -half;
+    view.right = view.top = half;
+    view.xLabel = "v_x [m/s]";
+    view.yLabel = "v_y [m/s]";
+    view.colours = ColourMap::Category;
+    view.colourLabel = "population";
+    if (params_.initial == "two-beams") {
+        std::ostringstream one, two;
+        one << "beam 1 (" << params_.drift1 << " m/s)";
+        two << "beam 2 (" << params_.drift2 << " m/s)";
+        view.categories = {one.str(), two.str()};
+    } else {
+        view.categories = {params_.initial == "bkw" ? "BKW gas" : "Maxwellian gas"};
+    }
+    const std::size_t n = state_.size();
+    view.x.resize(n);
+    view.y.resize(n);
+    view.radius.assign(n, 0.0f);
+    view.value.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        view.x[i] = static_cast<float>(state_.vx[i]);
+        view.y[i] = static_cast<float>(state_.vy[i]);
+        view.value[i] = state_.origin[i];
+    }
+    return view;
+}
+
+} // namespace pl

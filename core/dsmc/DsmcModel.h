@@ -1,0 +1,79 @@
+// Bird's No-Time-Counter DSMC in one collision cell (the seed): the NTC loop once, the collision model
+// an interchangeable CollisionModel. step() reads like the method: candidates, selection, acceptance,
+// scattering.
+#pragma once
+
+#include "DsmcCollisionModel.h"
+#include "DsmcParams.h"
+#include "DsmcState.h"
+#include "common/Model.h"
+
+namespace pl {
+
+struct DsmcObservables {
+    std::int64_t step = 0;
+    double time = 0;
+    std::size_t particles = 0;
+    double ux = 0, uy = 0, uz = 0;                   // mean velocity [m/s]
+    double tx = 0, ty = 0, tz = 0, t = 0, tPerp = 0; // temperatures [K] about the mean velocity
+    double kurtosisVx = 0;                           // ⟨δv_x⁴⟩ / ⟨δv_x²⟩²: 3 for a Maxwellian
+    double m4 = 0, m6 = 0, m8 = 0;          // ⟨c^2k⟩ / M_2k^eq at the sampled energy: 1 at equilibrium
+    double m4Bkw = 0, m6Bkw = 0, m8Bkw = 0; // the exact BKW values now (NaN unless BKW + Maxwell)
+    double klDivergence = 0; // of the peculiar-speed histogram from Maxwell–Boltzmann at T [nats]
+    double collisionsPerParticle = 0;
+};
+
+class DsmcModel : public Model {
+public:
+    DsmcModel();
+
+    std::string kind() const override { return "dsmc"; }
+    const std::vector<ParamSpec>& paramSpecs() const override { return DsmcParams::describe(); }
+    ParamValues params() const override;
+    void setParams(const ParamValues& values) override;
+    void reset(const Preset& preset) override;
+    void reset() override;
+    Preset toPreset() const override;
+    void step() override;
+    std::int64_t stepCount() const override { return step_; }
+    double time() const override { return time_; }
+    std::size_t particleCount() const override { return state_.size(); }
+    std::optional<ModelFailure> failure() const override { return failure_; }
+    std::int64_t plannedSteps() const override { return params_.runSteps; }
+    bool reversible() const override { return false; }
+    std::vector<std::string> seriesColumns() const override;
+    std::vector<double> sampleSeries() override;
+    std::vector<NamedHistogram> histograms() const override;
+    void writeParticles(std::ostream& out) const override;
+    SceneView sceneView() const override;
+
+    // DSMC-specific API
+    const DsmcParams& parameters() const { return params_; }
+    const DsmcState& state() const { return state_; }
+    DsmcState& mutableState() { return state_; } // for analytic set-ups in tests
+    DsmcObservables observe() const;
+    const CollisionModel& collisionModel() const { return collisions_; }
+    double numberDensity() const; // real molecules per m³
+    long long lastCandidates() const { return candidates_; }
+    long long lastCollisions() const { return collisionsThisStep_; }
+    double sigmaCrMax() const { return sigmaCrMax_; }
+
+private:
+    void buildInitialState();
+    void addPopulation(long long count, double drift, std::uint8_t origin, std::uint32_t stream);
+    void addBkwPopulation(long long count);
+    void estimateSigmaCrMax();
+
+    DsmcParams params_;
+    std::uint64_t seed_ = 1;
+    CollisionModel collisions_;
+    DsmcState state_;
+    double sigmaCrMax_ = 0.0;
+    double remainder_ = 0.0; // fractional candidate carried to the next step (NTC)
+    long long candidates_ = 0, collisionsThisStep_ = 0, collisionsTotal_ = 0;
+    std::int64_t step_ = 0;
+    double time_ = 0.0;
+    std::optional<ModelFailure> failure_;
+};
+
+} // namespace pl

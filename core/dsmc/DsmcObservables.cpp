@@ -1,0 +1,181 @@
+// Observables of the cell: temperatures about the mean velocity, kurtosis, normalised moments with the
+// exact BKW curves, the KL divergence to Maxwell–Boltzmann, the NTC counters, and the histograms.
+#include "DsmcModel.h"
+#include "DsmcTheory.h"
+
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+namespace pl {
+
+namespace {
+const double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr int kKlBins = 40;
+constexpr double kKlRangeSigmas = 5.0; // peculiar speeds up to 5 √(kT/m): all but ~1e-5 of them
+} // namespace
+
+DsmcObservables DsmcModel::observe() const {
+    DsmcObservables o;
+    o.step = step_;
+    o.time = time_;
+    o.particles = state_.size();
+    const std::size_t n = state_.size();
+    if (n == 0) return o;
+    const double inv = 1.0 / static_cast<double>(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        o.ux += state_.vx[i];
+        o.uy += state_.vy[i];
+        o.uz += state_.vz[i];
+    }
+    o.ux *= inv;
+    o.uy *= inv;
+    o.uz *= inv;
+    double sx = 0, sy = 0, sz = 0, x4 = 0, c4 = 0, c6 = 0, c8 = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+        const double dx = state_.vx[i] - o.ux, dy = state_.vy[i] - o.uy, dz = state_.vz[i] - o.uz;
+        const double dx2 = dx * dx, c2 = dx2 + dy * dy + dz * dz;
+        sx += dx2;
+        sy += dy * dy;
+        sz += dz * dz;
+        x4 += dx2 * dx2;
+        c4 += c2 * c2;
+        c6 += c2 * c2 * c2;
+        c8 += c2 * c2 * c2 * c2;
+    }
+    const double m = params_.mass();
+    o.tx = m * sx * inv / kBoltzmann;
+    o.ty = m * sy * inv / kBoltzmann;
+    o.tz = m * sz * inv / kBoltzmann;
+    o.t = (o.tx + o.ty + o.tz) / 3.0;
+    o.tPerp = 0.5 * (o.ty + o.tz);
+    o.kurtosisVx = sx > 0 ? x4 * inv / ((sx * inv) * (sx * inv)) : kNaN;
+    // Equilibrium moments at the sampled energy: ⟨c^2k⟩_eq = (2k+1)!! (kT/m)^k with kT/m = ⟨c²⟩/3.
+    const double s2 = (sx + sy + sz) * inv / 3.0;
+    o.m4 = s2 > 0 ? c4 * inv / (15.0 * s2 * s2) : kNaN;
+    o.m6 = s2 > 0 ? c6 * inv / (105.0 * s2 * s2 * s2) : kNaN;
+    o.m8 = s2 > 0 ? c8 * inv / (945.0 * s2 * s2 * s2 * s2) : kNaN;
+    if (params_.initial == "bkw" && collisions_.kind == CollisionModel::Kind::Maxwell) {
+        // Time in mean collision times: ν = n σ c_r, the same at every temperature for Maxwell molecules.
+        const double K = dsmc::bkwK(numberDensity() * collisions_.prefactor * time_);
+        o.m4Bkw = dsmc::bkwMomentRatio(2, K);
+        o.m6Bkw = dsmc::bkwMomentRatio(3, K);
+        o.m8Bkw = dsmc::bkwMomentRatio(4, K);
+    } else {
+        o.m4Bkw = o.m6Bkw = o.m8Bkw = kNaN;
+    }
+    // KL divergence Σ p ln(p/q) of the binned peculiar speeds from Maxwell–Boltzmann at the same T.
+    if (s2 > 0) {
+        const double width = kKlRangeSigmas * std::sqrt(s2) / kKlBins;
+        const double inverseWidth = 1.0 / width;
+        std::vector<double> counts(kKlBins, 0.0);
+        for (std::size_t i = 0; i < n; ++i) {
+            const double dx = state_.vx[i] - o.ux, dy = state_.vy[i] - o.uy, dz = state_.vz[i] - o.uz;
+            const auto b = static_cast<std::size_t>(std::sqrt(dx * dx + dy * dy + dz * dz) * inverseWidth);
+            if (b < counts.size()) counts[b] += 1.0;
+        }
+        for (int b = 0; b < kKlBins; ++b) {
+            if (counts[b] == 0) continue;
+            const double p = counts[b] * inv;
+            const double q =
+                dsmc::maxwellSpeedCdf((b + 1) * width, s2) - dsmc::maxwellSpeedCdf(b * width, s2);
+            o.klDivergence += p * std::log(p / std::max(q, 1e-300));
+        }
+    }
+    o.collisionsPerParticle = 2.0 * static_cast<double>(collisionsTotal_) * inv;
+    return o;
+}
+
+std::vector<std::string> DsmcModel::seriesColumns() const {
+    return {"step",
+            "time",
+            "particles",
+            "Tx",
+            "Ty",
+            "Tz",
+            "T",
+            "T_perp",
+            "anisotropy",
+            "ux",
+            "uy",
+            "uz",
+            "kurtosis_vx",
+            "ng",
+            "nc",
+            "sigma_cr_max",
+            "M4",
+            "M6",
+            "M8",
+            "M4_bkw",
+            "M6_bkw",
+            "M8_bkw",
+            "kl_divergence",
+            "collisions_per_particle"};
+}
+
+std::vector<double> DsmcModel::sampleSeries() {
+    const DsmcObservables o = observe();
+    return {static_cast<double>(o.step),
+            o.time,
+            static_cast<double>(o.particles),
+            o.tx,
+            o.ty,
+            o.tz,
+            o.t,
+            o.tPerp,
+            o.tx - o.tPerp,
+            o.ux,
+            o.uy,
+            o.uz,
+            o.kurtosisVx,
+            static_cast<double>(candidates_),
+            static_cast<double>(collisionsThisStep_),
+            sigmaCrMax_,
+            o.m4,
+            o.m6,
+            o.m8,
+            o.m4Bkw,
+            o.m6Bkw,
+            o.m8Bkw,
+            o.klDivergence,
+            o.collisionsPerParticle};
+}
+
+std::vector<NamedHistogram> DsmcModel::histograms() const {
+    const DsmcObservables o = observe();
+    const double sigma2 = kBoltzmann * o.t / params_.mass();
+    const double drift = std::sqrt(o.ux * o.ux + o.uy * o.uy + o.uz * o.uz);
+    const double vmax = params_.histSpeedMax;
+    const auto bins = static_cast<std::size_t>(params_.histBins);
+    std::ostringstream summary;
+    summary.precision(4);
+    summary << "T = " << o.t << " K, u_x = " << o.ux << " m/s, " << o.collisionsPerParticle
+            << " collisions each";
+
+    NamedHistogram speed;
+    speed.name = "speed";
+    speed.label = "all particles";
+    speed.axis = "speed [m/s]";
+    speed.summary = summary.str();
+    speed.counts = Histogram(0.0, vmax, bins);
+    NamedHistogram vx;
+    vx.name = "vx";
+    vx.label = "all particles";
+    vx.axis = "v_x [m/s]";
+    vx.summary = speed.summary;
+    vx.counts = Histogram(-vmax, vmax, 2 * bins);
+    for (std::size_t i = 0; i < state_.size(); ++i) {
+        speed.counts.add(std::sqrt(state_.vx[i] * state_.vx[i] + state_.vy[i] * state_.vy[i] +
+                                   state_.vz[i] * state_.vz[i]));
+        vx.counts.add(state_.vx[i]);
+    }
+    // The overlay is the Maxwellian the cell relaxes to: same T, same mean velocity.
+    speed.theoryDensity = [sigma2, drift](double v) { return dsmc::maxwellianSpeedPdf(v, sigma2, drift); };
+    const double ux = o.ux;
+    vx.theoryDensity = [sigma2, ux](double v) {
+        return std::exp(-(v - ux) * (v - ux) / (2 * sigma2)) / std::sqrt(2 * std::numbers::pi * sigma2);
+    };
+    return {speed, vx};
+}
+
+} // namespace pl

@@ -1,0 +1,53 @@
+// Parameters of the DSMC cell (SI units: m, s, kg, K). One table drives presets, the CLI and the UI.
+#pragma once
+
+#include "common/ParamSpec.h"
+
+#include <string>
+#include <vector>
+
+namespace pl {
+
+struct DsmcParams {
+    // Gas and cell (the seed: O2, F_N = 5e8, V_c = 1e-8 m³, Δt = 2e-5 s, 500 steps)
+    double massAmu = 32.0;    // molecular mass [u]
+    double fn = 5e8;          // real molecules per simulated particle
+    double cellVolume = 1e-8; // [m³]
+    double dt = 2e-5;         // [s]
+    long long runSteps = 500; // the run stops here (as the seed does); 0 runs on
+
+    // Collision model: σ c_r as a function of the relative speed c_r
+    std::string crossSection = "seed"; // seed | hard-sphere | vhs | maxwell
+    double diameter = 4.07e-10;        // hard-sphere diameter [m]
+    double vhsDiameter = 4.07e-10;     // VHS reference diameter d_ref [m] (O2, Bird 1994 App. A)
+    double vhsTref = 273.0;            // VHS reference temperature [K]
+    double vhsOmega = 0.77;            // VHS viscosity index ω (O2)
+    double maxwellSigmaCr = 1.5e-17;   // σ c_r of Maxwell molecules [m³/s]
+    double sigmaCrMaxInit = 0.0;       // first (σ c_r)_max [m³/s]; 0: estimated from the initial state
+
+    // Initial state
+    std::string initial = "two-beams"; // two-beams | maxwellian | bkw
+    long long count1 = 1000;           // beam 1 (or all particles of a single population)
+    long long count2 = 1000;           // beam 2 (two-beams only)
+    double drift1 = 100.0;             // beam 1 velocity along x [m/s]
+    double drift2 = 300.0;             // beam 2 velocity along x [m/s]
+    double temperature = 5.0;          // of each beam, or of the Maxwellian / BKW state [K]
+
+    // Observation
+    double histSpeedMax = 450.0; // speed histogram range [0, max] [m/s] (seed: 0–450, 25 bins)
+    long long histBins = 25;
+
+    double mass() const; // [kg]
+    long long totalCount() const { return initial == "two-beams" ? count1 + count2 : count1; }
+    // Cross-field checks; throws ParamError naming the key.
+    void validate() const;
+
+    static const std::vector<ParamField<DsmcParams>>& fields();
+    static const std::vector<ParamSpec>& describe();
+};
+
+// Physical constants (CODATA 2018, exact in the SI).
+inline constexpr double kBoltzmann = 1.380649e-23;       // [J/K]
+inline constexpr double kAtomicMass = 1.66053906660e-27; // [kg]
+
+} // namespace pl
