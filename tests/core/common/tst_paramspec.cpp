@@ -8,12 +8,7 @@ using namespace pl;
 
 namespace {
 ParamSpec realSpec() {
-    ParamSpec s;
-    s.key = "dt";
-    s.unit = "T";
-    s.kind = ParamKind::Real;
-    s.min = -1;
-    s.max = 1;
+    ParamSpec s = makeSpec("dt", "Time step", "T", "Integration", "A signed time step.", -1, 1, 0, 0.5);
     s.nonZero = true;
     return s;
 }
