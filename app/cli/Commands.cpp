@@ -140,11 +140,11 @@ int runSimulation(const RunOptions& options) {
         }
         progress.finish();
         // Everything measured so far is written even when the model failed: nothing is lost.
-        if (!options.out.empty()) {
+        writeText(options.out, [&] {
             std::ostringstream csv;
             series.writeCsv(csv);
-            writeText(options.out, [&] { return csv.str(); });
-        }
+            return csv.str();
+        });
         writeText(options.histogram, [&] { return histogramsCsv(*model); });
         writeText(options.dumpFinal, [&] { return particlesCsv(*model); });
     } catch (const FileError& e) {

@@ -49,12 +49,11 @@ int main(int argc, char** argv) {
     window.controller()->play();
     if (parser.isSet(measureFps)) {
         // Frames actually drawn by the viewport while the simulation runs at its normal frame timer.
-        auto* clock = new QElapsedTimer;
-        clock->start();
-        const auto* model = window.controller()->model();
-        const long long startStep = model->stepCount();
-        QTimer::singleShot(static_cast<int>(1000 * parser.value(measureFps).toDouble()), &app, [&, clock] {
-            const double seconds = clock->elapsed() / 1000.0;
+        QElapsedTimer clock; // lives until exec() returns, after the measurement
+        clock.start();
+        const long long startStep = window.controller()->model()->stepCount();
+        QTimer::singleShot(static_cast<int>(1000 * parser.value(measureFps).toDouble()), &app, [&] {
+            const double seconds = clock.elapsed() / 1000.0;
             std::printf(
                 "{\"preset\": \"%s\", \"seconds\": %.2f, \"fps\": %.1f, \"steps_per_second\": %.0f}\n",
                 qPrintable(window.document()->title()), seconds, window.viewportCore()->framesPerSecond(),

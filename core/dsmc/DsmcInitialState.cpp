@@ -10,6 +10,26 @@ namespace pl {
 namespace {
 // Independent streams of initial draws.
 constexpr std::uint32_t kBeamOneStream = 1, kBeamTwoStream = 2, kBkwStream = 3;
+
+// Subtracts the mean velocity of particles [first, end); returns their Σ|v|² afterwards.
+double removeMean(DsmcState& s, std::size_t first) {
+    const auto count = static_cast<double>(s.size() - first);
+    double mean[3] = {0, 0, 0};
+    for (std::size_t i = first; i < s.size(); ++i) {
+        mean[0] += s.vx[i];
+        mean[1] += s.vy[i];
+        mean[2] += s.vz[i];
+    }
+    for (double& m : mean) m /= count;
+    double sum2 = 0;
+    for (std::size_t i = first; i < s.size(); ++i) {
+        s.vx[i] -= mean[0];
+        s.vy[i] -= mean[1];
+        s.vz[i] -= mean[2];
+        sum2 += s.vx[i] * s.vx[i] + s.vy[i] * s.vy[i] + s.vz[i] * s.vz[i];
+    }
+    return sum2;
+}
 } // namespace
 
 void DsmcModel::buildInitialState() {
@@ -41,20 +61,7 @@ void DsmcModel::addPopulation(long long count, double drift, std::uint8_t origin
         (void)unused;
         state_.append({sigma * gx, sigma * gy, sigma * gz}, origin);
     }
-    double mean[3] = {0, 0, 0};
-    for (std::size_t i = first; i < state_.size(); ++i) {
-        mean[0] += state_.vx[i];
-        mean[1] += state_.vy[i];
-        mean[2] += state_.vz[i];
-    }
-    for (double& m : mean) m /= static_cast<double>(count);
-    double sum2 = 0;
-    for (std::size_t i = first; i < state_.size(); ++i) {
-        state_.vx[i] -= mean[0];
-        state_.vy[i] -= mean[1];
-        state_.vz[i] -= mean[2];
-        sum2 += state_.vx[i] * state_.vx[i] + state_.vy[i] * state_.vy[i] + state_.vz[i] * state_.vz[i];
-    }
+    const double sum2 = removeMean(state_, first);
     const double scale =
         count > 1 && sum2 > 0 ? std::sqrt(3.0 * static_cast<double>(count) * sigma * sigma / sum2) : 0.0;
     for (std::size_t i = first; i < state_.size(); ++i) {
@@ -87,17 +94,7 @@ void DsmcModel::addBkwPopulation(long long count) {
         state_.append({speed * sinTheta * std::cos(phi), speed * sinTheta * std::sin(phi), speed * cosTheta},
                       0);
     }
-    double mean[3] = {0, 0, 0};
-    for (std::size_t i = first; i < state_.size(); ++i) {
-        mean[0] += state_.vx[i];
-        mean[1] += state_.vy[i];
-        mean[2] += state_.vz[i];
-    }
-    for (std::size_t i = first; i < state_.size(); ++i) {
-        state_.vx[i] -= mean[0] / static_cast<double>(count);
-        state_.vy[i] -= mean[1] / static_cast<double>(count);
-        state_.vz[i] -= mean[2] / static_cast<double>(count);
-    }
+    removeMean(state_, first);
 }
 
 } // namespace pl

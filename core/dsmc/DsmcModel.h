@@ -50,13 +50,10 @@ public:
     // DSMC-specific API
     const DsmcParams& parameters() const { return params_; }
     const DsmcState& state() const { return state_; }
-    DsmcState& mutableState() { return state_; } // for analytic set-ups in tests
     DsmcObservables observe() const;
     const CollisionModel& collisionModel() const { return collisions_; }
     double numberDensity() const; // real molecules per m³
-    long long lastCandidates() const { return candidates_; }
     long long lastCollisions() const { return collisionsThisStep_; }
-    double sigmaCrMax() const { return sigmaCrMax_; }
 
 private:
     void buildInitialState();

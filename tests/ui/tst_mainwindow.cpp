@@ -36,6 +36,11 @@ int distinctColours(const QImage& image) {
     return static_cast<int>(colours.size());
 }
 
+void raiseDockOf(ui::MainWindow& window, ui::SeriesPlot* plot) {
+    window.findChild<QDockWidget*>(plot->spec().objectName + "Dock")->raise();
+    QTest::qWait(20);
+}
+
 QPoint widgetPoint(ui::MainWindow& window, double x, double y) {
     return window.viewportCore()->transform().toWidget(x, y).toPoint();
 }
@@ -75,6 +80,7 @@ private slots:
             QVERIFY(window.histogram()->plot()->plottableCount() >= 2); // bars and the theory curve
             for (ui::SeriesPlot* plot : window.seriesPlots()) {
                 if (!plot->spec().kinds.contains(QString::fromStdString(builtin.preset.model))) continue;
+                raiseDockOf(window, plot); // tabbed-away plots refresh when they are shown
                 QVERIFY(plot->plot()->graphCount() >= 2);
                 QVERIFY2(plot->plot()->graph(0)->dataCount() >= 10, qPrintable(plot->spec().title));
             }
@@ -294,6 +300,7 @@ private slots:
         for (ui::SeriesPlot* plot : window.seriesPlots())
             if (plot->spec().objectName == "momentsPlot") moments = plot;
         QVERIFY(moments);
+        raiseDockOf(window, moments);
         int visible = 0;
         for (int g = 0; g < moments->plot()->graphCount(); ++g)
             visible += moments->plot()->graph(g)->visible();

@@ -63,13 +63,9 @@ DistributionPlot::DistributionPlot(SimulationController* controller, const QStri
     });
 }
 
-void DistributionPlot::setAveragingWindow(int samples) {
-    window_->setValue(samples);
-}
-
 void DistributionPlot::refresh() {
     Model* model = controller_->model();
-    if (!model) return;
+    if (!model || !isVisible()) return; // histograms cost a pass (and a sort) over all particles
     latest_.clear();
     for (auto& h : model->histograms())
         if (h.name.starts_with(prefix_)) latest_.push_back(std::move(h));
@@ -133,6 +129,11 @@ void DistributionPlot::redraw() {
     plot_->yAxis->setRange(0, top > 0 ? 1.15 * top : 1.0);
     title_->setText(summaries.join("\n"));
     plot_->replot(QCustomPlot::rpQueuedReplot);
+}
+
+void DistributionPlot::showEvent(QShowEvent* event) {
+    QWidget::showEvent(event);
+    refresh();
 }
 
 void DistributionPlot::changeEvent(QEvent* event) {

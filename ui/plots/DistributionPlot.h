@@ -27,10 +27,10 @@ public:
     // Takes the model's current histograms as the newest sample and redraws.
     void refresh();
     QCustomPlot* plot() const { return plot_; }
-    void setAveragingWindow(int samples);
 
 protected:
-    void changeEvent(QEvent* event) override; // the projector mode changes the application font
+    void changeEvent(QEvent* event) override;   // the projector mode changes the application font
+    void showEvent(QShowEvent* event) override; // a hidden or tabbed-away plot catches up when shown
 
 private:
     void redraw();

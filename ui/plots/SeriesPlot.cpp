@@ -69,6 +69,7 @@ void SeriesPlot::rebuild() {
 }
 
 void SeriesPlot::refresh() {
+    if (!isVisible()) return; // nobody sees it: showEvent refreshes it when it comes back
     const SeriesStore* store = controller_->series();
     const QVector<double> time = store->values(store->column("time"));
     for (const auto& b : bound_) {
@@ -116,12 +117,19 @@ void SeriesPlot::refresh() {
             range.lower = std::max(range.lower, range.upper * 1e-12);
             y->setRange(std::min(range.lower / 2, range.upper / 100), range.upper * 2);
         } else {
-            const double pad =
-                range.size() > 0 ? 0.08 * range.size() : std::max(1e-12, std::abs(range.upper) * 0.05);
+            // A constant curve gets ±5 % of its value (any scale: (σ c_r)_max is ~1e-17), or ±1 at zero.
+            const double pad = range.size() > 0     ? 0.08 * range.size()
+                               : range.upper != 0.0 ? 0.05 * std::abs(range.upper)
+                                                    : 1.0;
             y->setRange(range.lower - pad, range.upper + pad);
         }
     }
     plot_->replot(QCustomPlot::rpQueuedReplot);
+}
+
+void SeriesPlot::showEvent(QShowEvent* event) {
+    QWidget::showEvent(event);
+    refresh();
 }
 
 void SeriesPlot::changeEvent(QEvent* event) {

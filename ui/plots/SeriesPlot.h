@@ -45,7 +45,8 @@ public:
     void refresh();
 
 protected:
-    void changeEvent(QEvent* event) override; // the projector mode changes the application font
+    void changeEvent(QEvent* event) override;   // the projector mode changes the application font
+    void showEvent(QShowEvent* event) override; // a hidden or tabbed-away plot catches up when shown
 
 private:
     void rebuild();

@@ -30,7 +30,6 @@ public:
     void zoomAt(QPointF widgetPoint, double factor); // keeps the world point under the cursor still
     void panBy(QPointF deltaPx);
     void zoomToFit(); // back to the whole scene
-    bool isFitted() const { return zoom_ == 1.0 && !panned_; }
 
 private:
     QSizeF size_{1, 1};
