@@ -132,6 +132,12 @@ void MainWindow::modelChanged() {
             dock->show();
         }
     }
+    // The scene's first series dock comes to the front of the tabbed stack.
+    for (SeriesPlot* plot : seriesPlots_)
+        if (plot->spec().kinds.contains(kind)) {
+            if (auto* dock = findChild<QDockWidget*>(plot->spec().objectName + "Dock")) dock->raise();
+            break;
+        }
     tools_->setEnabled(controller_->model()->tools() != nullptr);
     heat_->setEnabled(controller_->model()->tools() != nullptr);
     viewportCore_->zoomToFit();

@@ -52,6 +52,7 @@ private:
     void createActions();
     void createSceneBar();
     void createToolPalette();
+    void syncGravity(); // the gravity action follows the model's "gravity" switch
     void createDocks();
     QDockWidget* addDock(QWidget* content, const QString& title, const QString& objectName,
                          Qt::DockWidgetArea area, const QStringList& kinds = {});
@@ -76,6 +77,7 @@ private:
     QComboBox* presetPicker_ = nullptr;
     QSpinBox* speed_ = nullptr;
     QSlider* heat_ = nullptr;
+    QAction* gravity_ = nullptr;
     QLabel* status_ = nullptr;
     QAction* playAction_ = nullptr;
     QAction* projectorAction_ = nullptr;

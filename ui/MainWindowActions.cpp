@@ -175,6 +175,17 @@ void MainWindow::createToolPalette() {
         connect(action, &QAction::triggered, this,
                 [this, tool = entry.tool] { viewportCore_->setTool(tool); });
     }
+    // The fluid seed's gravity toggle: shown for scenes whose parameters have a "gravity" switch.
+    gravity_ = menuAction(menu, tr("Gravity"), Qt::Key_G, tr("Switch gravity on or off"));
+    gravity_->setObjectName("gravityAction");
+    gravity_->setCheckable(true);
+    bar->addAction(gravity_);
+    connect(gravity_, &QAction::triggered, this, [this](bool on) {
+        const QString problem = controller_->setParameters({{"gravity", on}});
+        if (!problem.isEmpty()) statusBar()->showMessage(problem, 6000);
+    });
+    connect(controller_, &SimulationController::parametersChanged, this, &MainWindow::syncGravity);
+    connect(controller_, &SimulationController::modelReplaced, this, &MainWindow::syncGravity);
     bar->addSeparator();
     bar->addWidget(new QLabel(tr(" Cool "), bar));
     heat_ = new QSlider(Qt::Horizontal, bar);
@@ -200,6 +211,17 @@ void MainWindow::createToolPalette() {
     connect(menuAction(menu, tr("Cool"), QKeySequence(Qt::CTRL | Qt::Key_Down),
                        tr("Lower the kinetic energy by 10 %")),
             &QAction::triggered, this, [scaleEnergy] { scaleEnergy(1.0 / kHeatStep); });
+}
+
+void MainWindow::syncGravity() {
+    const Model* model = controller_->model();
+    const ParamSpec* spec = model ? findSpec(model->paramSpecs(), "gravity") : nullptr;
+    const bool toggle = spec && spec->kind == ParamKind::Boolean;
+    gravity_->setVisible(toggle);
+    gravity_->setEnabled(toggle);
+    if (!toggle) return;
+    const QSignalBlocker block(gravity_);
+    gravity_->setChecked(std::get<bool>(model->params().at("gravity")));
 }
 
 void MainWindow::fillPresetPicker() {

@@ -4,6 +4,7 @@
 #include "common/EmbeddedFiles.h"
 #include "dsmc/DsmcModel.h"
 #include "md/MdModel.h"
+#include "pbf/PbfModel.h"
 
 #include <filesystem>
 
@@ -16,7 +17,8 @@ constexpr std::string_view kPresetSuffix = ".json";
 
 const std::vector<ModelInfo>& modelCatalog() {
     static const std::vector<ModelInfo> list{{"gas", "Gas (molecular dynamics)", &MdParams::describe()},
-                                             {"dsmc", "Rarefied gas (DSMC)", &DsmcParams::describe()}};
+                                             {"dsmc", "Rarefied gas (DSMC)", &DsmcParams::describe()},
+                                             {"fluid", "Fluid (position-based)", &PbfParams::describe()}};
     return list;
 }
 
@@ -29,6 +31,7 @@ const std::vector<ParamSpec>* specsForModel(const std::string& kind) {
 std::unique_ptr<Model> createModel(const std::string& kind) {
     if (kind == "gas") return std::make_unique<MdModel>();
     if (kind == "dsmc") return std::make_unique<DsmcModel>();
+    if (kind == "fluid") return std::make_unique<PbfModel>();
     return nullptr;
 }
 

@@ -34,6 +34,12 @@ struct NamedHistogram {
     std::function<double(double)> theoryDensity; // the density theory predicts (empty when none applies)
 };
 
+// A curve that is not a time series: e.g. the density error after each solver iteration of the last step.
+struct NamedProfile {
+    std::string name; // e.g. "density_error_mean"
+    std::vector<double> x, y;
+};
+
 class Model {
 public:
     virtual ~Model() = default;
@@ -66,6 +72,7 @@ public:
     virtual std::vector<std::string> seriesColumns() const = 0;
     virtual std::vector<double> sampleSeries() = 0;
     virtual std::vector<NamedHistogram> histograms() const = 0;
+    virtual std::vector<NamedProfile> profiles() const { return {}; }
 
     // Particle dump: CSV with a header line.
     virtual void writeParticles(std::ostream& out) const = 0;

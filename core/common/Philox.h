@@ -43,6 +43,7 @@ enum class RngPurpose : std::uint32_t {
     Spawn = 4,
     Shuffle = 5,
     Collision = 6,
+    WallJitter = 7,
 };
 
 // Four independent words for (seed, purpose, subject, sequence). subject is usually a particle id and

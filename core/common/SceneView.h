@@ -33,6 +33,7 @@ struct SceneView {
 
     std::vector<Obstacle> obstacles;
     std::optional<double> pistonX; // a vertical wall from bottom to top at this x
+    std::string hint;              // faint instruction across the view (e.g. while a tank is empty)
 
     std::size_t size() const { return x.size(); }
 };

@@ -35,8 +35,8 @@ private slots:
     void listShowsBuiltins() {
         const auto r = cli({"list"});
         QCOMPARE(r.exitCode, 0);
-        for (const char* name :
-             {"gas-seed", "gas-classroom", "gas-mixture", "dsmc-seed", "dsmc-bkw", "dsmc-maxwell-relax"})
+        for (const char* name : {"gas-seed", "gas-classroom", "gas-mixture", "dsmc-seed", "dsmc-bkw",
+                                 "dsmc-maxwell-relax", "fluid-seed", "fluid-dam-break", "fluid-obstacle"})
             QVERIFY(r.out.contains(name));
     }
 
@@ -58,6 +58,27 @@ private slots:
         const QStringList bins = readLines(hist);
         QCOMPARE(bins.filter(QRegularExpression("^speed,")).size(), 25); // the seed's 0–450 m/s in 25 bins
         QCOMPARE(bins.filter(QRegularExpression("^vx,")).size(), 50);
+    }
+
+    void damBreakRunsItsPlannedLengthWithTheFrontColumns() {
+        QTemporaryDir dir;
+        const QString series = dir.filePath("s.csv"), particles = dir.filePath("p.csv");
+        const auto r = cli({"run", "fluid-dam-break", "--out", series, "--dump-final", particles, "--quiet"});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        const QStringList rows = readLines(series);
+        QCOMPARE(rows.size(), 1 + 301); // run_steps = 300, every step sampled, plus the start
+        const QStringList header = rows[0].split(',');
+        for (const char* column : {"step", "time", "particles", "density_error_mean", "density_error_max",
+                                   "kinetic", "front_Z", "front_T"})
+            QVERIFY2(header.contains(column), column);
+        const QStringList first = rows[1].split(','), last = rows.last().split(',');
+        QCOMPARE(first[header.indexOf("front_Z")].toDouble(), 1.0); // Z(0) = 1 by construction
+        QCOMPARE(last[header.indexOf("particles")], QString("1250"));
+        const double z = last[header.indexOf("front_Z")].toDouble(),
+                     t = last[header.indexOf("front_T")].toDouble();
+        QVERIFY2(z > 1.0 && z < 1.0 + 2.0 * t, qPrintable(rows.last()));
+        QCOMPARE(readLines(particles).size(), 1 + 1250);
+        QCOMPARE(readLines(particles)[0], QString("index,x,y,vx,vy,density_ratio"));
     }
 
     void runWritesEveryFile() {

@@ -7,6 +7,7 @@
 #include "UiTestSupport.h"
 #include "md/MdModel.h"
 #include "panels/ParameterPanel.h"
+#include "pbf/PbfModel.h"
 #include "plots/DistributionPlot.h"
 #include "plots/SeriesPlot.h"
 #include "viewport/GLViewport.h"
@@ -73,22 +74,53 @@ private slots:
             window.resize(1280, 800);
             window.show();
             QVERIFY(QTest::qWaitForWindowExposed(&window));
+            Model* model = window.controller()->model();
+            if (model->particleCount() == 0) // the fluid seed's empty tank: pour a block as a user would
+                QVERIFY(model->tools()->spawnInRectangle(10, 2, 40, 12).starts_with("added"));
             runFrames(window, 30);
             QVERIFY(window.controller()->model()->stepCount() > 0);
             QVERIFY2(window.controller()->series()->rows() >= 10, qPrintable(name)); // 1 sample per 3 frames
             QVERIFY(window.parameters()->editor("dt") != nullptr);
-            QVERIFY(window.histogram()->plot()->plottableCount() >= 2); // bars and the theory curve
+            if (!model->histograms().empty())
+                QVERIFY(window.histogram()->plot()->plottableCount() >= 2); // bars and the theory curve
             for (ui::SeriesPlot* plot : window.seriesPlots()) {
                 if (!plot->spec().kinds.contains(QString::fromStdString(builtin.preset.model))) continue;
                 raiseDockOf(window, plot); // tabbed-away plots refresh when they are shown
                 QVERIFY(plot->plot()->graphCount() >= 2);
-                QVERIFY2(plot->plot()->graph(0)->dataCount() >= 10, qPrintable(plot->spec().title));
+                // The seed's tank has no dam-break column, so its front plot has nothing to show.
+                if (name == "fluid-seed" && plot->spec().objectName == "frontPlot") continue;
+                int filled = 0; // graphs with 10 samples, or a profile of all 5 iterations and the result
+                for (int g = 0; g < plot->plot()->graphCount(); ++g)
+                    filled += plot->plot()->graph(g)->visible() && plot->plot()->graph(g)->dataCount() >= 6;
+                QVERIFY2(filled >= 2, qPrintable(name + ": " + plot->spec().title));
             }
             const QImage shot = window.windowImage();
             QDir().mkpath(PARTICLELAB_SCREENSHOT_DIR);
             QVERIFY(shot.save(QString(PARTICLELAB_SCREENSHOT_DIR) + "/mainwindow-" + name + ".png"));
             QVERIFY(distinctColours(window.viewportImage()) > 20); // particles in palette colours, not blank
         }
+    }
+
+    void gravityToggleFollowsTheScene() {
+        ui::MainWindow window;
+        auto* gravity = window.findChild<QAction*>("gravityAction");
+        QVERIFY(gravity);
+        QVERIFY(window.openPreset("gas-seed"));
+        QVERIFY(!gravity->isVisible()); // the gas has a gravity strength, not a switch
+        QVERIFY(window.openPreset("fluid-dam-break"));
+        QVERIFY(gravity->isVisible() && gravity->isChecked());
+        gravity->trigger();
+        QCOMPARE(std::get<bool>(window.controller()->model()->params().at("gravity")), false);
+        QVERIFY(window.isWindowModified());
+        // Without gravity the column does not fall: its mean vertical velocity stays ≥ 0 (it only relaxes
+        // at its free surface), where with gravity it is −1.7 L/s after these 20 steps.
+        for (int s = 0; s < 20; ++s) window.controller()->model()->step();
+        const auto* fluid = static_cast<const PbfModel*>(window.controller()->model());
+        double vy = 0;
+        for (double v : fluid->state().vy) vy += v / static_cast<double>(fluid->particleCount());
+        QVERIFY2(vy > -0.01, qPrintable(QString::number(vy)));
+        window.controller()->setParameters({{"gravity", true}});
+        QVERIFY(gravity->isChecked());
     }
 
     void negativeSpeedRunsTimeBackwards() {

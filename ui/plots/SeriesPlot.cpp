@@ -27,7 +27,7 @@ SeriesPlot::SeriesPlot(SimulationController* controller, SeriesPlotSpec spec, QW
 void SeriesPlot::addPanel(QCPAxisRect* rect, const SeriesPanel& panel) {
     const SeriesStore* store = controller_->series();
     rect->axis(QCPAxis::atLeft)->setLabel(panel.yLabel);
-    rect->axis(QCPAxis::atBottom)->setLabel(tr("time"));
+    rect->axis(QCPAxis::atBottom)->setLabel(panel.xLabel.isEmpty() ? tr("time") : panel.xLabel);
     if (panel.logarithmic) {
         rect->axis(QCPAxis::atLeft)->setScaleType(QCPAxis::stLogarithmic);
         rect->axis(QCPAxis::atLeft)->setTicker(QSharedPointer<QCPAxisTickerLog>(new QCPAxisTickerLog));
@@ -38,14 +38,17 @@ void SeriesPlot::addPanel(QCPAxisRect* rect, const SeriesPanel& panel) {
     rect->insetLayout()->addElement(legend, Qt::AlignTop | Qt::AlignRight);
     legend->setLayer("legend");
     legend->setBrush(QColor(255, 255, 255, 200));
+    const int xColumn = store->column(panel.xColumn);
     for (const auto& curve : panel.curves) {
-        const int column = store->column(curve.column);
-        if (column < 0) continue;
+        const int column = panel.profile ? -1 : store->column(curve.column);
+        if (!panel.profile && (column < 0 || xColumn < 0)) continue;
         QCPGraph* graph = plot_->addGraph(rect->axis(QCPAxis::atBottom), rect->axis(QCPAxis::atLeft));
         graph->setName(curve.label);
         graph->setPen(QPen(curve.colour, 1.6, curve.style));
+        if (panel.profile) graph->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCircle, 5));
         graph->addToLegend(legend);
-        bound_.push_back({plot_->graphCount() - 1, column, curve.label, legend});
+        bound_.push_back({plot_->graphCount() - 1, column, xColumn,
+                          panel.profile ? curve.column.toStdString() : std::string(), curve.label, legend});
     }
 }
 
@@ -61,8 +64,9 @@ void SeriesPlot::rebuild() {
         plot_->plotLayout()->addElement(1, 0, lower);
         addPanel(lower, spec_.lower);
         // One time axis for both panels.
-        connect(upper->axis(QCPAxis::atBottom), qOverload<const QCPRange&>(&QCPAxis::rangeChanged),
-                lower->axis(QCPAxis::atBottom), qOverload<const QCPRange&>(&QCPAxis::setRange));
+        if (spec_.upper.xColumn == spec_.lower.xColumn && !spec_.upper.profile && !spec_.lower.profile)
+            connect(upper->axis(QCPAxis::atBottom), qOverload<const QCPRange&>(&QCPAxis::rangeChanged),
+                    lower->axis(QCPAxis::atBottom), qOverload<const QCPRange&>(&QCPAxis::setRange));
     }
     applyPlotFont(plot_, font());
     refresh();
@@ -71,11 +75,22 @@ void SeriesPlot::rebuild() {
 void SeriesPlot::refresh() {
     if (!isVisible()) return; // nobody sees it: showEvent refreshes it when it comes back
     const SeriesStore* store = controller_->series();
-    const QVector<double> time = store->values(store->column("time"));
+    std::vector<NamedProfile> profiles;
+    if (const Model* model = controller_->model(); model && hasProfiles()) profiles = model->profiles();
     for (const auto& b : bound_) {
-        const QVector<double> values = store->values(b.column);
+        QVector<double> xs, values;
+        if (b.column >= 0) {
+            xs = store->values(b.xColumn);
+            values = store->values(b.column);
+        } else {
+            for (const auto& p : profiles)
+                if (p.name == b.profile) {
+                    xs = QVector<double>(p.x.begin(), p.x.end());
+                    values = QVector<double>(p.y.begin(), p.y.end());
+                }
+        }
         QCPGraph* graph = plot_->graph(b.graph);
-        graph->setData(time, values, true);
+        graph->setData(xs, values, b.column < 0 || b.xColumn == store->column("time"));
         // A column that is NaN throughout (kT of an absent species) stays out of the plot and legend.
         const bool any = std::any_of(values.begin(), values.end(), [](double v) { return std::isfinite(v); });
         graph->setVisible(any);
@@ -88,10 +103,19 @@ void SeriesPlot::refresh() {
                            ? QStringLiteral("%1  %2").arg(b.label).arg(values.back(), 0, 'g', 4)
                            : b.label);
     }
-    if (time.size() > 1)
-        for (auto* rect : plot_->axisRects())
-            rect->axis(QCPAxis::atBottom)
-                ->setRange(std::min(time.front(), time.back()), std::max(time.front(), time.back()));
+    for (auto* rect : plot_->axisRects()) {
+        // x: the span of the data (a time axis follows the run; T and iteration axes start at 0).
+        bool found = false;
+        QCPRange span;
+        for (QCPGraph* graph : rect->axis(QCPAxis::atBottom)->graphs()) {
+            bool has = false;
+            const QCPRange r = graph->getKeyRange(has);
+            if (!has) continue;
+            span = found ? QCPRange(std::min(span.lower, r.lower), std::max(span.upper, r.upper)) : r;
+            found = true;
+        }
+        if (found && span.size() > 0) rect->axis(QCPAxis::atBottom)->setRange(span);
+    }
     for (auto* rect : plot_->axisRects()) {
         QCPAxis* y = rect->axis(QCPAxis::atLeft);
         const auto graphs = y->graphs();
@@ -125,6 +149,10 @@ void SeriesPlot::refresh() {
         }
     }
     plot_->replot(QCustomPlot::rpQueuedReplot);
+}
+
+bool SeriesPlot::hasProfiles() const {
+    return spec_.upper.profile || spec_.lower.profile;
 }
 
 void SeriesPlot::showEvent(QShowEvent* event) {

@@ -1,5 +1,6 @@
-// A plot of columns of the series store against time: an upper panel and an optional lower one (linear
-// or logarithmic), the latest values in the legend. The Energy and Thermodynamics docks are instances.
+// A plot of columns of the series store against time (or another column): an upper panel and an optional
+// lower one (linear or logarithmic), the latest values in the legend. A panel may instead show one of the
+// model's profiles. The Energy, Thermodynamics and Density error docks are instances.
 #pragma once
 
 #include <QColor>
@@ -26,6 +27,11 @@ struct SeriesPanel {
     QString yLabel;
     std::vector<SeriesCurve> curves;
     bool logarithmic = false;
+    QString xColumn = QStringLiteral("time"); // the store column on the x axis
+    QString xLabel;                           // empty: "time"
+    // Profile panels plot the model's profiles() (curves name profiles, not columns): a curve of the
+    // latest state, such as the density error after each solver iteration of the last step.
+    bool profile = false;
 };
 
 struct SeriesPlotSpec {
@@ -50,14 +56,17 @@ protected:
 
 private:
     void rebuild();
+    bool hasProfiles() const;
     void addPanel(QCPAxisRect* rect, const SeriesPanel& panel);
 
     SimulationController* controller_;
     SeriesPlotSpec spec_;
     QCustomPlot* plot_;
     struct Bound {
-        int graph; // index into plot_->graph()
-        int column;
+        int graph;  // index into plot_->graph()
+        int column; // store column, or −1 for a profile
+        int xColumn;
+        std::string profile;
         QString label;
         QCPLegend* legend;
     };

@@ -305,6 +305,17 @@ void ViewportCore::paintOverlay(QPainter& painter) const {
         painter.drawText(box.adjusted(4, 4, 0, 0), Qt::AlignLeft | Qt::AlignTop,
                          QString::fromStdString(scene_.yLabel));
     }
+    if (!scene_.hint.empty()) {
+        // The seed's faint instruction: large, bold, 20 % opaque, out of the way once there is fluid.
+        QFont font = painter.font();
+        font.setBold(true);
+        font.setPointSizeF(font.pointSizeF() * 2.2);
+        painter.save();
+        painter.setFont(font);
+        painter.setPen(QColor(255, 255, 255, 51));
+        painter.drawText(box, Qt::AlignCenter | Qt::TextWordWrap, QString::fromStdString(scene_.hint));
+        painter.restore();
+    }
     for (std::size_t i = 0; i < scene_.obstacles.size(); ++i) {
         const Obstacle& o = scene_.obstacles[i];
         const bool active = hovered_ == i || (gesture_ == Gesture::DragObstacle && grabbed_ == i);

@@ -39,7 +39,8 @@ private slots:
             names << QString::fromStdString(p.name);
             QVERIFY2(!p.preset.description.empty(), p.name.c_str());
             auto model = instantiate(p.preset);
-            QVERIFY(model->particleCount() > 0);
+            // Every preset starts with particles but the fluid seed's tank, which waits to be poured.
+            QVERIFY2(model->particleCount() > 0 || p.name == "fluid-seed", p.name.c_str());
         }
         for (const char* required : {"gas-seed", "gas-classroom", "gas-mixture"})
             QVERIFY(names.contains(required));
@@ -79,7 +80,7 @@ private slots:
             QCOMPARE(back.seed, p.seed);
             QCOMPARE(back.description, p.description);
             QCOMPARE(back.obstacles.size(), p.obstacles.size());
-            if (hasObstacles) QCOMPARE(back.obstacles[1].halfHeight, 0.05);
+            if (hasObstacles) QCOMPARE(back.obstacles.back().halfHeight, 0.05);
             // Every parameter written, equal to what the model runs with.
             auto a = instantiate(p), b = instantiate(back);
             QVERIFY(a->params() == b->params());

@@ -1,0 +1,124 @@
+// Position-Based Fluids (Macklin & Müller 2013) in 2D: the seed's interactive tank. step() reads like the
+// paper's Algorithm 1; each pass over the particles is in gather form (it writes only particle i), so the
+// GPU backend can mirror it kernel for kernel.
+#pragma once
+
+#include "PbfBoundaries.h"
+#include "PbfKernels.h"
+#include "PbfNeighbours.h"
+#include "PbfParams.h"
+#include "PbfState.h"
+#include "common/Model.h"
+
+namespace pl {
+
+struct PbfObservables {
+    std::int64_t step = 0;
+    double time = 0;
+    std::size_t particles = 0;
+    // Density error: the compression max(ρ/ρ₀ − 1, 0), mean over particles and max. The free surface is
+    // always under-dense, so a signed mean would measure the surface rather than the compressibility.
+    double densityErrorMean = 0, densityErrorMax = 0;
+    double densityRatioMean = 0; // ⟨ρ/ρ₀⟩, signed: the seed's ρ₀ = 1 shows here
+    double kinetic = 0;          // Σ ½ v² (unit masses) [L²/s²]
+    double maxSpeed = 0;
+    double neighboursMean = 0, neighboursMin = 0, neighboursMax = 0; // within h
+    double frontZ = NAN, frontT = NAN; // dam-break surge front (physics.md §3); NaN without an initial block
+    long long drained = 0;             // removed by the drain since reset
+};
+
+class PbfModel : public Model, public SceneTools {
+public:
+    PbfModel();
+
+    std::string kind() const override { return "fluid"; }
+    const std::vector<ParamSpec>& paramSpecs() const override { return PbfParams::describe(); }
+    ParamValues params() const override;
+    void setParams(const ParamValues& values) override;
+    void reset(const Preset& preset) override;
+    void reset() override;
+    Preset toPreset() const override;
+    void step() override;
+    std::int64_t stepCount() const override { return step_; }
+    double time() const override { return time_; }
+    std::size_t particleCount() const override { return state_.size(); }
+    std::optional<ModelFailure> failure() const override { return failure_; }
+    std::int64_t plannedSteps() const override { return params_.runSteps; }
+    bool reversible() const override { return false; } // the projections dissipate
+    std::vector<std::string> seriesColumns() const override;
+    std::vector<double> sampleSeries() override;
+    std::vector<NamedHistogram> histograms() const override { return {}; }
+    std::vector<NamedProfile> profiles() const override;
+    void writeParticles(std::ostream& out) const override;
+    SceneView sceneView() const override;
+    SceneTools* tools() override { return this; }
+
+    // SceneTools
+    const std::vector<Obstacle>& obstacles() const override { return obstacles_; }
+    void addObstacle(const Obstacle& obstacle) override;
+    void removeObstacle(std::size_t index) override;
+    void moveObstacle(std::size_t index, double x, double y, double vx, double vy) override;
+    bool hasPiston() const override { return false; }
+    void movePiston(double, double) override {}
+    std::string spawnInRectangle(double x0, double y0, double x1, double y1) override;
+    void scaleKineticEnergy(double factor) override;
+
+    // Fluid-specific API
+    const PbfParams& parameters() const { return params_; }
+    const PbfState& state() const { return state_; }
+    PbfObservables observe() const;
+    double restDensity() const { return restDensity_; }
+    const pbf::Kernels& kernels() const { return kernels_; }
+    // Mean and max density error measured before each iteration of the last step, then after the last one.
+    std::vector<double> iterationErrorMean() const;
+    std::vector<double> iterationErrorMax() const;
+
+private:
+    // Algorithm 1, line by line.
+    void applyExternalForcesAndPredict();
+    void findNeighbours();
+    void computeLambdas(std::size_t iteration);
+    void applyPositionCorrections();
+    void updateVelocities();
+    void applyVorticityConfinement();
+    void applyXsphViscosity();
+    void commitPositions();
+    void drainOverCap();
+
+    void refreshDerived(); // kernels, ρ₀, s_corr and the confinement box from the parameters
+    pbf::Box confinementBox() const;
+    pbf::WallJitter wallJitter() const;
+    struct Spawned {
+        long long added = 0, refusedCap = 0, refusedOutside = 0, refusedOverlap = 0;
+        std::string message() const;
+    };
+    Spawned spawnLattice(double x0, double y0, double x1, double y1);
+    // ρ_i/ρ₀ − 1 of every particle at the current positions.
+    std::vector<double> densityConstraints(std::vector<int>* neighboursWithinH = nullptr) const;
+
+    PbfParams params_;
+    std::uint64_t seed_ = 1;
+    std::vector<Obstacle> obstacles_;
+    PbfState state_;
+    pbf::Kernels kernels_;
+    pbf::ArtificialPressure scorr_;
+    double restDensity_ = 1.0;
+
+    // Per-step work arrays (kept to avoid reallocations).
+    std::vector<double> px_, py_;       // predicted, then corrected positions
+    std::vector<double> nextX_, nextY_; // Jacobi target of a correction pass
+    std::vector<double> lambda_, constraint_;
+    std::vector<double> pairGradX_, pairGradY_; // ∇W_ij per neighbour entry, at this iteration's positions
+    std::vector<double> gradSumX_, gradSumY_;   // G_i = Σ_j ∇W_ij
+    std::vector<double> scorrSumX_, scorrSumY_; // S_i = Σ_j s_corr,ij ∇W_ij
+    std::vector<double> omega_, nextVx_, nextVy_;
+    pbf::Neighbours neighbours_;
+
+    std::vector<double> errorMean_, errorMax_; // before iteration k of the last step
+    std::int64_t step_ = 0;
+    double time_ = 0.0;
+    long long drained_ = 0;
+    std::optional<ModelFailure> failure_;
+};
+
+} // namespace pl

@@ -1,0 +1,158 @@
+// What the fluid reports: density error (per step and per iteration), kinetic energy, neighbour counts,
+// and the dam-break surge front in Martin & Moyce's units.
+#include "PbfModel.h"
+
+#include "common/Parallel.h"
+
+#include <algorithm>
+#include <cmath>
+#include <ostream>
+
+namespace pl {
+
+std::vector<double> PbfModel::densityConstraints(std::vector<int>* neighboursWithinH) const {
+    const std::size_t count = state_.size();
+    std::vector<double> c(count);
+    if (neighboursWithinH) neighboursWithinH->assign(count, 0);
+    if (count == 0) return c;
+    pbf::Neighbours list;
+    list.build(state_.x.data(), state_.y.data(), count, params_.h, params_.worldWidth, params_.worldHeight);
+    const auto n = static_cast<long long>(count);
+    const pbf::Kernels k = kernels_;
+#pragma omp parallel for schedule(static) if (n >= kParallelMinParticles)
+    for (long long i = 0; i < n; ++i) {
+        double rho = k.selfWeight();
+        int within = 0;
+        for (std::uint32_t e = list.offsets()[i]; e < list.offsets()[i + 1]; ++e) {
+            const std::uint32_t j = list.entries()[e];
+            const double dx = state_.x[i] - state_.x[j], dy = state_.y[i] - state_.y[j];
+            const double r2 = dx * dx + dy * dy;
+            rho += k.w(r2);
+            within += r2 < k.h2 ? 1 : 0;
+        }
+        c[i] = rho / restDensity_ - 1.0;
+        if (neighboursWithinH) (*neighboursWithinH)[i] = within;
+    }
+    return c;
+}
+
+PbfObservables PbfModel::observe() const {
+    PbfObservables o;
+    o.step = step_;
+    o.time = time_;
+    o.particles = state_.size();
+    o.drained = drained_;
+    const std::size_t n = state_.size();
+    if (n == 0) return o;
+    std::vector<int> neighbours;
+    const std::vector<double> c = densityConstraints(&neighbours);
+    double compression = 0, ratio = 0, within = 0;
+    o.neighboursMin = neighbours[0];
+    for (std::size_t i = 0; i < n; ++i) {
+        compression += std::max(c[i], 0.0);
+        o.densityErrorMax = std::max(o.densityErrorMax, c[i]);
+        ratio += c[i] + 1.0;
+        within += neighbours[i];
+        o.neighboursMin = std::min<double>(o.neighboursMin, neighbours[i]);
+        o.neighboursMax = std::max<double>(o.neighboursMax, neighbours[i]);
+        const double v2 = state_.vx[i] * state_.vx[i] + state_.vy[i] * state_.vy[i];
+        o.kinetic += 0.5 * v2;
+        o.maxSpeed = std::max(o.maxSpeed, std::sqrt(v2));
+    }
+    const double count = static_cast<double>(n);
+    o.densityErrorMean = compression / count;
+    o.densityRatioMean = ratio / count;
+    o.neighboursMean = within / count;
+
+    // Dam break (physics.md §3): a column of base a and height n² a; z is measured from the column's back
+    // (the left wall in the preset) to the rightmost particle on the floor, plus half a spacing so that
+    // Z(0) = 1 exactly; T = n t √(g/a).
+    const double g = params_.gravity ? std::hypot(params_.gravityX, params_.gravityY) : 0.0;
+    if (params_.hasFill() && g > 0) {
+        const double a = params_.fillX1 - params_.fillX0;
+        const double aspect = std::sqrt((params_.fillY1 - params_.fillY0) / a);
+        const double floorLayer = params_.particleRadius + params_.spacing();
+        double front = -INFINITY;
+        for (std::size_t i = 0; i < n; ++i)
+            if (state_.y[i] <= floorLayer) front = std::max(front, state_.x[i]);
+        if (std::isfinite(front)) {
+            o.frontZ = (front + 0.5 * params_.spacing() - params_.fillX0) / a;
+            o.frontT = aspect * time_ * std::sqrt(g / a);
+        }
+    }
+    return o;
+}
+
+std::vector<std::string> PbfModel::seriesColumns() const {
+    return {"step",
+            "time",
+            "particles",
+            "density_error_mean",
+            "density_error_max",
+            "density_ratio_mean",
+            "kinetic",
+            "max_speed",
+            "neighbours_mean",
+            "neighbours_min",
+            "neighbours_max",
+            "front_Z",
+            "front_T",
+            "front_Z_shallow_water",
+            "drained"};
+}
+
+std::vector<double> PbfModel::sampleSeries() {
+    const PbfObservables o = observe();
+    // The shallow-water (Ritter) front moves at dZ/dT = 2: the bound a real front stays below.
+    const double ritter = std::isfinite(o.frontT) ? 1.0 + 2.0 * o.frontT : NAN;
+    return {static_cast<double>(o.step),
+            o.time,
+            static_cast<double>(o.particles),
+            o.densityErrorMean,
+            o.densityErrorMax,
+            o.densityRatioMean,
+            o.kinetic,
+            o.maxSpeed,
+            o.neighboursMean,
+            o.neighboursMin,
+            o.neighboursMax,
+            o.frontZ,
+            o.frontT,
+            ritter,
+            static_cast<double>(o.drained)};
+}
+
+std::vector<double> PbfModel::iterationErrorMean() const {
+    std::vector<double> errors = errorMean_;
+    errors.push_back(observe().densityErrorMean);
+    return errors;
+}
+
+std::vector<double> PbfModel::iterationErrorMax() const {
+    std::vector<double> errors = errorMax_;
+    errors.push_back(observe().densityErrorMax);
+    return errors;
+}
+
+std::vector<NamedProfile> PbfModel::profiles() const {
+    // Entry k: the error after k corrections of the last step; the last entry is the step's result.
+    const PbfObservables now = observe();
+    NamedProfile mean{"density_error_mean", {}, errorMean_}, max{"density_error_max", {}, errorMax_};
+    mean.y.push_back(now.densityErrorMean);
+    max.y.push_back(std::max(now.densityErrorMax, 0.0));
+    for (std::size_t k = 0; k < mean.y.size(); ++k) {
+        mean.x.push_back(static_cast<double>(k));
+        max.x.push_back(static_cast<double>(k));
+    }
+    return {mean, max};
+}
+
+void PbfModel::writeParticles(std::ostream& out) const {
+    const std::vector<double> c = densityConstraints();
+    out << "index,x,y,vx,vy,density_ratio\n";
+    for (std::size_t i = 0; i < state_.size(); ++i)
+        out << i << ',' << state_.x[i] << ',' << state_.y[i] << ',' << state_.vx[i] << ',' << state_.vy[i]
+            << ',' << c[i] + 1.0 << '\n';
+}
+
+} // namespace pl

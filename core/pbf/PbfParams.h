@@ -1,0 +1,55 @@
+// Parameters of the position-based fluid (world units: L, s; unit particle mass). One table drives presets,
+// the CLI and the UI. Defaults are the seed's (80 × 40 world, h = 1.1, ε = 100, 5 iterations, Δt = 1/20).
+#pragma once
+
+#include "common/ParamSpec.h"
+
+#include <string>
+#include <vector>
+
+namespace pl {
+
+struct PbfParams {
+    // World and external field
+    double worldWidth = 80.0, worldHeight = 40.0; // box [0, W] × [0, H]
+    bool gravity = true;                          // the seed's toggle
+    double gravityX = 0.0, gravityY = -9.8;       // [L/s²]
+
+    // Solver (Macklin & Müller 2013)
+    double dt = 0.05;                        // [s]
+    long long runSteps = 0;                  // a run stops here; 0 runs on (the seed)
+    long long iterations = 5;                // Jacobi iterations of λ and Δx per step
+    double h = 1.1;                          // kernel support radius [L]
+    double neighbourFactor = 1.05;           // neighbour search radius / h
+    double epsilon = 100.0;                  // constraint relaxation ε
+    std::string kernel = "seed-3d";          // seed-3d: 3D constants as written; 2d: normalised in 2D
+    bool selfDensity = false;                // ρ_i includes W(0) (the paper); the seed omits it
+    std::string restDensitySource = "value"; // value: rest_density; spawn-lattice: ρ of the spawn grid
+    double restDensity = 1.0;                // ρ₀
+    double scorrK = 0.001, scorrDq = 0.3;    // s_corr = −k (W(r) / W(Δq h))ⁿ
+    long long scorrN = 4;
+    double particleRadius = 0.3; // walls and obstacles keep centres this far away [L]
+    double xsph = 0.0;           // XSPH viscosity c (paper: 0.01); 0: off
+    double vorticity = 0.0;      // vorticity confinement ε_vort; 0: off
+
+    // Particles
+    double spawnSpacing = 0.8; // spawn lattice spacing / h
+    long long maxParticles = 3000;
+    bool drain = true; // over the cap, the lowest particles drain away (the seed); off: spawns refused
+    double fillX0 = 0, fillY0 = 0, fillX1 = 0, fillY1 = 0; // initial block of fluid; empty when x1 ≤ x0
+
+    // Display
+    double colourSpeedMax = 5.0; // speed at the red end of the colour scale [L/s]
+
+    double spacing() const { return spawnSpacing * h; }
+    double neighbourRadius() const { return neighbourFactor * h; }
+    bool hasFill() const { return fillX1 > fillX0 && fillY1 > fillY0; }
+    long long fillCount() const; // particles of the initial block: its spawn grid
+    // Cross-field checks; throws ParamError naming the key.
+    void validate() const;
+
+    static const std::vector<ParamField<PbfParams>>& fields();
+    static const std::vector<ParamSpec>& describe();
+};
+
+} // namespace pl

@@ -1,0 +1,116 @@
+// The fluid as the viewport and the mouse tools see it: the seed's sea-green tank with blue → red speed
+// colours, and the drag-to-spawn rectangle filled on a grid of spacing 0.8 h.
+#include "PbfModel.h"
+
+#include "common/CellList.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace pl {
+
+namespace {
+// Spawned particles closer than this fraction of the spacing to fluid already there are refused: pouring
+// onto a pool fills its gaps instead of stacking particles on top of each other.
+constexpr double kMinimumSeparation = 0.5;
+} // namespace
+
+SceneView PbfModel::sceneView() const {
+    SceneView view;
+    view.left = 0;
+    view.bottom = 0;
+    view.right = params_.worldWidth;
+    view.top = params_.worldHeight;
+    view.background = {46 / 255.0f, 139 / 255.0f, 87 / 255.0f}; // the seed's #2E8B57
+    view.colours = ColourMap::BlueRed;
+    view.colourLabel = "speed";
+    view.colourMax = params_.colourSpeedMax;
+    if (state_.size() == 0) view.hint = "Click and drag to pour fluid";
+    const std::size_t n = state_.size();
+    view.x.resize(n);
+    view.y.resize(n);
+    view.radius.assign(n, static_cast<float>(params_.particleRadius));
+    view.value.resize(n);
+    const double inverseMax = 1.0 / params_.colourSpeedMax;
+    for (std::size_t i = 0; i < n; ++i) {
+        view.x[i] = static_cast<float>(state_.x[i]);
+        view.y[i] = static_cast<float>(state_.y[i]);
+        view.value[i] = static_cast<float>(std::hypot(state_.vx[i], state_.vy[i]) * inverseMax);
+    }
+    view.obstacles = obstacles_;
+    return view;
+}
+
+std::string PbfModel::Spawned::message() const {
+    std::ostringstream out;
+    out << "added " << added << (added == 1 ? " particle" : " particles");
+    if (refusedCap > 0) out << "; " << refusedCap << " refused: the particle cap (max_particles) is reached";
+    if (refusedOverlap > 0) out << "; " << refusedOverlap << " refused: fluid is already there";
+    if (refusedOutside > 0)
+        out << "; " << refusedOutside << " refused: outside the tank or inside an obstacle";
+    return out.str();
+}
+
+std::string PbfModel::spawnInRectangle(double x0, double y0, double x1, double y1) {
+    const long long before = static_cast<long long>(state_.size());
+    Spawned result = spawnLattice(x0, y0, x1, y1);
+    std::string text = result.message();
+    const long long over = before + result.added - params_.maxParticles;
+    if (params_.drain && over > 0) text += "; the drain will remove the " + std::to_string(over) + " lowest";
+    return text;
+}
+
+// A grid of spacing δ = 0.8 h centred in the rectangle (a point: one particle), at rest.
+PbfModel::Spawned PbfModel::spawnLattice(double x0, double y0, double x1, double y1) {
+    if (x1 < x0) std::swap(x0, x1);
+    if (y1 < y0) std::swap(y0, y1);
+    const double d = params_.spacing();
+    const auto columns = std::max<long long>(1, static_cast<long long>(std::floor((x1 - x0) / d + 1e-6)));
+    const auto rows = std::max<long long>(1, static_cast<long long>(std::floor((y1 - y0) / d + 1e-6)));
+    const double startX = 0.5 * (x0 + x1) - 0.5 * d * static_cast<double>(columns - 1);
+    const double startY = 0.5 * (y0 + y1) - 0.5 * d * static_cast<double>(rows - 1);
+
+    CellList existing;
+    const double separation = kMinimumSeparation * d;
+    existing.configure(0, 0, params_.worldWidth, params_.worldHeight, separation);
+    existing.build(state_.x.data(), state_.y.data(), state_.size());
+    const auto tooClose = [&](double x, double y) {
+        const int cx = existing.cellX(x), cy = existing.cellY(y);
+        for (int r = std::max(cy - 1, 0); r <= std::min(cy + 1, existing.cellsY() - 1); ++r)
+            for (int c = std::max(cx - 1, 0); c <= std::min(cx + 1, existing.cellsX() - 1); ++c) {
+                const int cell = r * existing.cellsX() + c;
+                for (auto k = existing.cellStart()[cell]; k < existing.cellStart()[cell + 1]; ++k) {
+                    const auto j = existing.order()[k];
+                    if (std::hypot(state_.x[j] - x, state_.y[j] - y) < separation) return true;
+                }
+            }
+        return false;
+    };
+
+    // With the drain on, one gesture may overfill by up to a whole tank; the next step drains the excess.
+    const long long cap = params_.drain ? 2 * params_.maxParticles : params_.maxParticles;
+    const std::size_t existingCount = state_.size();
+    const pbf::Box box = confinementBox();
+    Spawned result;
+    for (long long r = 0; r < rows; ++r) {
+        for (long long c = 0; c < columns; ++c) {
+            const double x = startX + d * static_cast<double>(c), y = startY + d * static_cast<double>(r);
+            double cx = x, cy = y;
+            pbf::confine(box, obstacles_, params_.particleRadius, {}, 0, cx, cy);
+            if (std::hypot(cx - x, cy - y) > 1e-9 * d) { // a grid point on the wall itself is inside
+                ++result.refusedOutside;
+            } else if (existingCount > 0 && tooClose(x, y)) {
+                ++result.refusedOverlap;
+            } else if (static_cast<long long>(state_.size()) >= cap) {
+                ++result.refusedCap;
+            } else {
+                state_.append(x, y, 0.0, 0.0);
+                ++result.added;
+            }
+        }
+    }
+    return result;
+}
+
+} // namespace pl

@@ -1,0 +1,234 @@
+// The passes of one PBF step (Macklin & Müller 2013, Algorithm 1). Every loop writes only particle i and
+// reads its neighbours' values from the previous pass (Jacobi), so results do not depend on the thread
+// count and each loop maps onto one GPU dispatch.
+#include "PbfModel.h"
+
+#include "common/Parallel.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace pl {
+
+namespace {
+long long loopCount(const PbfState& state) {
+    return static_cast<long long>(state.size());
+}
+} // namespace
+
+// Lines 1–4: v ← v + Δt f_ext; x* ← x + Δt v, kept inside the walls and out of obstacles.
+void PbfModel::applyExternalForcesAndPredict() {
+    const std::size_t count = state_.size();
+    px_.resize(count);
+    py_.resize(count);
+    nextX_.resize(count);
+    nextY_.resize(count);
+    lambda_.resize(count);
+    constraint_.resize(count);
+    const double dt = params_.dt;
+    const double gx = params_.gravity ? params_.gravityX : 0.0;
+    const double gy = params_.gravity ? params_.gravityY : 0.0;
+    const pbf::Box box = confinementBox();
+    const pbf::WallJitter jitter = wallJitter();
+    const double margin = params_.particleRadius;
+    const long long n = loopCount(state_);
+    double *x = state_.x.data(), *y = state_.y.data(), *vx = state_.vx.data(), *vy = state_.vy.data();
+    double *px = px_.data(), *py = py_.data();
+#pragma omp parallel for schedule(static) if (n >= kParallelMinParticles)
+    for (long long i = 0; i < n; ++i) {
+        vx[i] += dt * gx;
+        vy[i] += dt * gy;
+        px[i] = x[i] + dt * vx[i];
+        py[i] = y[i] + dt * vy[i];
+        pbf::confine(box, obstacles_, margin, jitter, static_cast<std::uint32_t>(i), px[i], py[i]);
+    }
+}
+
+// Lines 5–7: neighbours within the search radius (1.05 h in the seed) of the predicted positions.
+void PbfModel::findNeighbours() {
+    neighbours_.build(px_.data(), py_.data(), state_.size(), params_.neighbourRadius(), params_.worldWidth,
+                      params_.worldHeight);
+}
+
+// Lines 9–11: ρ_i = Σ_j W(x_i − x_j) (eq. 2), C_i = ρ_i/ρ₀ − 1 (eq. 1),
+// λ_i = −C_i / (Σ_k |∇_k C_i|² + ε) (eq. 11) with ∇_i C_i = Σ_j ∇W_ij / ρ₀ and ∇_j C_i = −∇W_ij / ρ₀ (eq. 8).
+// The pair terms the correction pass needs at these same positions are kept: ∇W_ij per neighbour entry,
+// G_i = Σ_j ∇W_ij and S_i = Σ_j s_corr,ij ∇W_ij, so that pass costs one multiply-add per pair.
+void PbfModel::computeLambdas(std::size_t iteration) {
+    const long long n = loopCount(state_);
+    const double *px = px_.data(), *py = py_.data();
+    double *lambda = lambda_.data(), *constraint = constraint_.data();
+    const std::uint32_t *offsets = neighbours_.offsets(), *entries = neighbours_.entries();
+    pairGradX_.resize(offsets[n]);
+    pairGradY_.resize(offsets[n]);
+    gradSumX_.resize(state_.size());
+    gradSumY_.resize(state_.size());
+    scorrSumX_.resize(state_.size());
+    scorrSumY_.resize(state_.size());
+    double *pgx = pairGradX_.data(), *pgy = pairGradY_.data();
+    double *sumGx = gradSumX_.data(), *sumGy = gradSumY_.data(), *sumSx = scorrSumX_.data(),
+           *sumSy = scorrSumY_.data();
+    const pbf::Kernels k = kernels_;
+    const pbf::ArtificialPressure scorr = scorr_;
+    const double inverseRest = 1.0 / restDensity_;
+    const double epsilon = params_.epsilon;
+#pragma omp parallel for schedule(static) if (n >= kParallelMinParticles)
+    for (long long i = 0; i < n; ++i) {
+        double rho = k.selfWeight(), gx = 0, gy = 0, sumSquares = 0, sx = 0, sy = 0;
+        for (std::uint32_t e = offsets[i]; e < offsets[i + 1]; ++e) {
+            const std::uint32_t j = entries[e];
+            const double dx = px[i] - px[j], dy = py[i] - py[j];
+            const double r2 = dx * dx + dy * dy;
+            const double w = k.w(r2);
+            const double f = k.gradFactor(r2); // both 0 beyond h
+            const double s = scorr(w);
+            rho += w;
+            pgx[e] = f * dx;
+            pgy[e] = f * dy;
+            gx += f * dx;
+            gy += f * dy;
+            sx += s * f * dx;
+            sy += s * f * dy;
+            sumSquares += f * f * r2;
+        }
+        const double c = rho * inverseRest - 1.0;
+        constraint[i] = c;
+        lambda[i] = -c / ((gx * gx + gy * gy + sumSquares) * inverseRest * inverseRest + epsilon);
+        sumGx[i] = gx;
+        sumGy[i] = gy;
+        sumSx[i] = sx;
+        sumSy[i] = sy;
+    }
+    // Serial sums: the same bits for any thread count.
+    double sum = 0, largest = 0;
+    for (long long i = 0; i < n; ++i) {
+        const double compression = std::max(constraint[i], 0.0);
+        sum += compression;
+        largest = std::max(largest, compression);
+    }
+    errorMean_[iteration] = n > 0 ? sum / static_cast<double>(n) : 0.0;
+    errorMax_[iteration] = largest;
+}
+
+// Lines 13–16: Δx_i = (1/ρ₀) Σ_j (λ_i + λ_j + s_corr) ∇W_ij (eq. 14) = (λ_i G_i + Σ_j λ_j ∇W_ij + S_i)/ρ₀,
+// then collision response; the new positions go to a second buffer so every particle sees its
+// neighbours' positions of this iteration.
+void PbfModel::applyPositionCorrections() {
+    const long long n = loopCount(state_);
+    const double *px = px_.data(), *py = py_.data(), *lambda = lambda_.data();
+    const double *pgx = pairGradX_.data(), *pgy = pairGradY_.data();
+    const double *sumGx = gradSumX_.data(), *sumGy = gradSumY_.data(), *sumSx = scorrSumX_.data(),
+                 *sumSy = scorrSumY_.data();
+    double *nx = nextX_.data(), *ny = nextY_.data();
+    const std::uint32_t *offsets = neighbours_.offsets(), *entries = neighbours_.entries();
+    const double inverseRest = 1.0 / restDensity_;
+    const pbf::Box box = confinementBox();
+    const pbf::WallJitter jitter = wallJitter();
+    const double margin = params_.particleRadius;
+#pragma omp parallel for schedule(static) if (n >= kParallelMinParticles)
+    for (long long i = 0; i < n; ++i) {
+        double sx = lambda[i] * sumGx[i] + sumSx[i], sy = lambda[i] * sumGy[i] + sumSy[i];
+        for (std::uint32_t e = offsets[i]; e < offsets[i + 1]; ++e) {
+            const double l = lambda[entries[e]];
+            sx += l * pgx[e];
+            sy += l * pgy[e];
+        }
+        nx[i] = px[i] + sx * inverseRest;
+        ny[i] = py[i] + sy * inverseRest;
+        pbf::confine(box, obstacles_, margin, jitter, static_cast<std::uint32_t>(i), nx[i], ny[i]);
+    }
+    px_.swap(nextX_);
+    py_.swap(nextY_);
+}
+
+// Lines 20–21: v ← (x* − x)/Δt; a particle touching an obstacle does not move into it faster than it moves.
+void PbfModel::updateVelocities() {
+    const long long n = loopCount(state_);
+    const double inverseDt = 1.0 / params_.dt;
+    const double margin = params_.particleRadius;
+    const double *x = state_.x.data(), *y = state_.y.data(), *px = px_.data(), *py = py_.data();
+    double *vx = state_.vx.data(), *vy = state_.vy.data();
+#pragma omp parallel for schedule(static) if (n >= kParallelMinParticles)
+    for (long long i = 0; i < n; ++i) {
+        vx[i] = (px[i] - x[i]) * inverseDt;
+        vy[i] = (py[i] - y[i]) * inverseDt;
+        if (!obstacles_.empty()) pbf::obstacleVelocity(obstacles_, margin, px[i], py[i], vx[i], vy[i]);
+    }
+}
+
+// Line 22, first half (eqs. 15–16) in 2D: the vorticity is a scalar, ω_i = Σ_j v_ij × ∇_j W_ij with
+// v_ij = v_j − v_i; η = ∇|ω| (an SPH gradient, volumes 1/ρ₀), N = η/|η|, f = ε (N × ω ẑ) = ε ω (N_y, −N_x).
+void PbfModel::applyVorticityConfinement() {
+    const long long n = loopCount(state_);
+    omega_.resize(state_.size());
+    const double *px = px_.data(), *py = py_.data();
+    double *vx = state_.vx.data(), *vy = state_.vy.data(), *omega = omega_.data();
+    const std::uint32_t *offsets = neighbours_.offsets(), *entries = neighbours_.entries();
+    const pbf::Kernels k = kernels_;
+#pragma omp parallel for schedule(static) if (n >= kParallelMinParticles)
+    for (long long i = 0; i < n; ++i) {
+        double w = 0;
+        for (std::uint32_t e = offsets[i]; e < offsets[i + 1]; ++e) {
+            const std::uint32_t j = entries[e];
+            const double dx = px[i] - px[j], dy = py[i] - py[j];
+            const double f = k.gradFactor(dx * dx + dy * dy); // ∇_i W = f (dx, dy); ∇_j W = −∇_i W
+            const double ux = vx[j] - vx[i], uy = vy[j] - vy[i];
+            w -= ux * (f * dy) - uy * (f * dx);
+        }
+        omega[i] = w;
+    }
+    const double strength = params_.vorticity * params_.dt;
+    const double inverseRest = 1.0 / restDensity_;
+#pragma omp parallel for schedule(static) if (n >= kParallelMinParticles)
+    for (long long i = 0; i < n; ++i) {
+        double ex = 0, ey = 0;
+        for (std::uint32_t e = offsets[i]; e < offsets[i + 1]; ++e) {
+            const std::uint32_t j = entries[e];
+            const double dx = px[i] - px[j], dy = py[i] - py[j];
+            const double f = k.gradFactor(dx * dx + dy * dy) * (std::abs(omega[j]) - std::abs(omega[i]));
+            ex += f * dx;
+            ey += f * dy;
+        }
+        ex *= inverseRest;
+        ey *= inverseRest;
+        const double length = std::hypot(ex, ey);
+        if (length < 1e-12) continue;
+        vx[i] += strength * omega[i] * ey / length;
+        vy[i] -= strength * omega[i] * ex / length;
+    }
+}
+
+// Line 22, second half (eq. 17): XSPH viscosity v_i ← v_i + c Σ_j (v_j − v_i) W_ij.
+void PbfModel::applyXsphViscosity() {
+    const long long n = loopCount(state_);
+    nextVx_.resize(state_.size());
+    nextVy_.resize(state_.size());
+    const double *px = px_.data(), *py = py_.data(), *vx = state_.vx.data(), *vy = state_.vy.data();
+    double *ox = nextVx_.data(), *oy = nextVy_.data();
+    const std::uint32_t *offsets = neighbours_.offsets(), *entries = neighbours_.entries();
+    const pbf::Kernels k = kernels_;
+    const double c = params_.xsph;
+#pragma omp parallel for schedule(static) if (n >= kParallelMinParticles)
+    for (long long i = 0; i < n; ++i) {
+        double sx = 0, sy = 0;
+        for (std::uint32_t e = offsets[i]; e < offsets[i + 1]; ++e) {
+            const std::uint32_t j = entries[e];
+            const double dx = px[i] - px[j], dy = py[i] - py[j];
+            const double w = k.w(dx * dx + dy * dy);
+            sx += (vx[j] - vx[i]) * w;
+            sy += (vy[j] - vy[i]) * w;
+        }
+        ox[i] = vx[i] + c * sx;
+        oy[i] = vy[i] + c * sy;
+    }
+    state_.vx.swap(nextVx_);
+    state_.vy.swap(nextVy_);
+}
+
+// Line 23: x ← x*.
+void PbfModel::commitPositions() {
+    state_.x.swap(px_);
+    state_.y.swap(py_);
+}
+
+} // namespace pl
