@@ -68,7 +68,6 @@ public:
     const PbfState& state() const { return state_; }
     PbfObservables observe() const;
     double restDensity() const { return restDensity_; }
-    const pbf::Kernels& kernels() const { return kernels_; }
     // Mean and max density error measured before each iteration of the last step, then after the last one.
     std::vector<double> iterationErrorMean() const;
     std::vector<double> iterationErrorMax() const;

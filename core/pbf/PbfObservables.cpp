@@ -139,7 +139,7 @@ std::vector<NamedProfile> PbfModel::profiles() const {
     const PbfObservables now = observe();
     NamedProfile mean{"density_error_mean", {}, errorMean_}, max{"density_error_max", {}, errorMax_};
     mean.y.push_back(now.densityErrorMean);
-    max.y.push_back(std::max(now.densityErrorMax, 0.0));
+    max.y.push_back(now.densityErrorMax);
     for (std::size_t k = 0; k < mean.y.size(); ++k) {
         mean.x.push_back(static_cast<double>(k));
         max.x.push_back(static_cast<double>(k));
