@@ -187,12 +187,13 @@ void MainWindow::setProjectorMode(bool on) {
 void MainWindow::updateStatus() {
     const Model* model = controller_->model();
     if (!model) return;
-    status_->setText(tr("%1 particles   t = %2   step %3   %4 steps/s   %5 fps")
+    status_->setText(tr("%1 particles   t = %2   step %3   %4 steps/s   %5 fps   %6")
                          .arg(model->particleCount())
                          .arg(model->time(), 0, 'g', 6)
                          .arg(model->stepCount())
                          .arg(controller_->stepsPerSecond(), 0, 'f', 0)
-                         .arg(viewportCore_->framesPerSecond(), 0, 'f', 0));
+                         .arg(viewportCore_->framesPerSecond(), 0, 'f', 0)
+                         .arg(model->backend() == "gl" ? tr("GPU") : tr("CPU")));
 }
 
 void MainWindow::readSettings() {
@@ -200,6 +201,15 @@ void MainWindow::readSettings() {
     restoreGeometry(settings.value("window/geometry").toByteArray());
     restoreState(settings.value("window/state").toByteArray());
     setProjectorMode(settings.value("window/projector", false).toBool());
+    try {
+        const auto backend =
+            gl::backendFromName(settings.value("simulation/backend", "auto").toString().toStdString());
+        controller_->setBackend(backend);
+        if (auto* action = findChild<QAction*>(
+                QString("backend-%1").arg(QString::fromStdString(gl::backendName(backend)))))
+            action->setChecked(true);
+    } catch (const std::invalid_argument&) { // a stale or hand-edited setting: keep automatic
+    }
 }
 
 void MainWindow::writeSettings() const {

@@ -3,7 +3,9 @@
 #include "MainWindow.h"
 #include "SimulationController.h"
 #include "catalog/ModelCatalog.h"
+#include "gpu/BenchmarkDialog.h"
 #include "viewport/ViewportCore.h"
+#include <QSettings>
 
 #include <QActionGroup>
 #include <QApplication>
@@ -103,6 +105,39 @@ void MainWindow::createActions() {
             &QAction::triggered, speed_, [this] { speed_->stepUp(); });
     connect(menuAction(sim, tr("Reverse time"), Qt::Key_Backspace, tr("Run time the other way")),
             &QAction::triggered, speed_, [this] { speed_->setValue(-speed_->value()); });
+
+    // Where the models compute: the factory in gl/Backends.h decides what "auto" means here.
+    QMenu* backendMenu = sim->addMenu(tr("Compute &backend"));
+    auto* backends = new QActionGroup(this);
+    const struct {
+        gl::Backend backend;
+        QString text, tip;
+    } backendEntries[] = {
+        {gl::Backend::Auto, tr("&Automatic"),
+         tr("The GPU for scenes large enough to gain from it, else the CPU")},
+        {gl::Backend::Cpu, tr("&CPU"), tr("The OpenMP reference models")},
+        {gl::Backend::Gl, tr("&GPU (OpenGL compute)"),
+         tr("OpenGL 4.3 compute shaders; the CPU where none exist")},
+    };
+    for (const auto& entry : backendEntries) {
+        QAction* action = menuAction(backendMenu, entry.text, {}, entry.tip);
+        action->setCheckable(true);
+        action->setChecked(entry.backend == controller_->backend());
+        action->setObjectName(
+            QString("backend-%1").arg(QString::fromStdString(gl::backendName(entry.backend))));
+        backends->addAction(action);
+        connect(action, &QAction::triggered, this, [this, b = entry.backend] {
+            controller_->setBackend(b);
+            QSettings().setValue("simulation/backend", QString::fromStdString(gl::backendName(b)));
+        });
+    }
+    connect(menuAction(sim, tr("Benchmark this &machine…"), {},
+                       tr("Time the gas and the fluid at growing N on the CPU and the GPU")),
+            &QAction::triggered, this, [this] {
+                auto* dialog = new BenchmarkDialog(this);
+                dialog->setAttribute(Qt::WA_DeleteOnClose);
+                dialog->show();
+            });
 
     viewMenu_ = menuBar()->addMenu(tr("&View"));
     connect(menuAction(viewMenu_, tr("Zoom to &fit"), QKeySequence(Qt::CTRL | Qt::Key_0),

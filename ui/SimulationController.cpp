@@ -2,6 +2,8 @@
 // frame rate (a slow machine runs the same trajectory, only slower).
 #include "SimulationController.h"
 
+#include "gpu/QtGlContext.h"
+
 #include <cmath>
 
 namespace pl::ui {
@@ -20,13 +22,14 @@ SimulationController::SimulationController(QObject* parent) : QObject(parent) {
 }
 
 QString SimulationController::load(const Preset& preset) {
-    std::unique_ptr<Model> next;
+    gl::BackendChoice next;
     try {
-        next = instantiate(preset);
+        next = gl::createModel(preset.model, backend_, &preset, appComputeContext());
     } catch (const std::exception& e) {
         return QString::fromStdString(e.what());
     }
-    model_ = std::move(next);
+    model_ = std::move(next.model);
+    if (!next.message.empty()) emit notice(QString::fromStdString(next.message));
     pending_.clear();
     if (stepsPerFrame_ < 0 && !model_->reversible()) setStepsPerFrame(-stepsPerFrame_);
     const auto values = model_->params();
@@ -36,6 +39,21 @@ QString SimulationController::load(const Preset& preset) {
     restartSeries();
     emit modelReplaced();
     return {};
+}
+
+void SimulationController::setBackend(gl::Backend backend) {
+    if (backend == backend_) return;
+    backend_ = backend;
+    if (!model_) return;
+    const bool wasRunning = isRunning();
+    pause();
+    const QString problem = load(model_->toPreset());
+    if (!problem.isEmpty())
+        emit notice(problem);
+    else
+        emit notice(tr("Computing on the %1 now; the experiment restarted from its parameters.")
+                        .arg(model_->backend() == "gl" ? tr("GPU") : tr("CPU")));
+    if (wasRunning) play();
 }
 
 QString SimulationController::setParameters(const ParamValues& values) {

@@ -5,6 +5,7 @@
 
 #include "SeriesStore.h"
 #include "catalog/ModelCatalog.h"
+#include "gl/Backends.h"
 
 #include <QElapsedTimer>
 #include <QObject>
@@ -20,6 +21,10 @@ public:
 
     // Loads a preset. On error the current experiment is kept and the message returned; empty on success.
     QString load(const Preset& preset);
+    // Where new models compute (auto: the GPU for scenes large enough to gain from it). Changing it
+    // restarts the experiment from its current parameters on the new backend.
+    gl::Backend backend() const { return backend_; }
+    void setBackend(gl::Backend backend);
     Model* model() const { return model_.get(); }
     SeriesStore* series() { return &series_; }
     bool isRunning() const { return timer_.isActive(); }
@@ -64,6 +69,7 @@ private:
     bool runComplete() const; // the model's planned run length is reached
 
     std::unique_ptr<Model> model_;
+    gl::Backend backend_ = gl::Backend::Auto;
     SeriesStore series_;
     ParamValues pending_;
     QTimer timer_;

@@ -4,6 +4,7 @@
 #include "catalog/ModelCatalog.h"
 #include "common/AtomicFile.h"
 #include "common/TimeSeries.h"
+#include "gl/Backends.h"
 
 #include <algorithm>
 #include <chrono>
@@ -47,12 +48,15 @@ void setThreads(int threads) {
     if (threads > 0) omp_set_num_threads(threads);
 }
 
+// The model on the asked backend; a backend that cannot be had is reported on stderr, not fatal.
 std::unique_ptr<Model> prepare(const std::string& name, const std::vector<std::string>& sets,
-                               std::optional<std::uint64_t> seed) {
+                               std::optional<std::uint64_t> seed, const std::string& backend) {
     Preset preset = loadPreset(name);
     applySets(preset, sets);
     if (seed) preset.seed = *seed;
-    return instantiate(preset);
+    gl::BackendChoice choice = gl::createModel(preset.model, gl::backendFromName(backend), &preset);
+    if (!choice.message.empty()) std::cerr << "particlelab-cli: " << choice.message << '\n';
+    return std::move(choice.model);
 }
 
 // Writes what makeText returns to path; nothing is formatted when no file was asked for.
@@ -120,7 +124,7 @@ int runSimulation(const RunOptions& options) {
     setThreads(options.threads);
     std::unique_ptr<Model> model;
     try {
-        model = prepare(options.preset, options.sets, options.seed);
+        model = prepare(options.preset, options.sets, options.seed, options.backend);
     } catch (const std::exception& e) {
         std::cerr << "particlelab-cli: " << e.what() << "\n";
         return kBadInput;
@@ -162,7 +166,7 @@ int benchmark(const BenchOptions& options) {
     setThreads(options.threads);
     std::unique_ptr<Model> model;
     try {
-        model = prepare(options.preset, options.sets, std::nullopt);
+        model = prepare(options.preset, options.sets, std::nullopt, options.backend);
     } catch (const std::exception& e) {
         std::cerr << "particlelab-cli: " << e.what() << "\n";
         return kBadInput;
@@ -173,6 +177,7 @@ int benchmark(const BenchOptions& options) {
     for (int r = 0; r < options.repeats; ++r) {
         const auto start = Clock::now();
         for (long long s = 0; s < options.steps; ++s) model->step();
+        model->finishPendingWork();
         seconds.push_back(secondsSince(start));
     }
     if (auto failure = model->failure()) {
@@ -191,7 +196,7 @@ int benchmark(const BenchOptions& options) {
     line["seconds_all"] = seconds;
     line["p_steps_per_s"] = particles * static_cast<double>(options.steps) / median;
     line["threads"] = omp_get_max_threads();
-    line["backend"] = "cpu";
+    line["backend"] = model->backend();
     std::cout << line.dump() << std::endl;
     return kOk;
 }

@@ -24,6 +24,7 @@ struct RunOptions {
     std::optional<long long> every; // sample observables every this many steps; default: 1 for a run with
                                     // a planned length (as the DSMC seed prints every step), else 100
     std::string out, histogram, dumpInitial, dumpFinal;
+    std::string backend = "auto"; // cpu, gl or auto
     bool quiet = false;
 };
 
@@ -33,6 +34,7 @@ struct BenchOptions {
     int threads = 0;
     long long steps = 2000;
     int repeats = 3;
+    std::string backend = "auto";
 };
 
 int listPresets();

@@ -29,6 +29,10 @@ int main(int argc, char** argv) {
     runCmd->add_option("--dump-initial", run.dumpInitial, "Initial particles CSV (id,species,x,y,vx,vy)");
     runCmd->add_option("--dump-final", run.dumpFinal, "Final particles CSV (id,species,x,y,vx,vy)");
     runCmd->add_flag("--quiet", run.quiet, "No progress line");
+    runCmd
+        ->add_option("--backend", run.backend,
+                     "cpu, gl (OpenGL 4.3 compute) or auto (the GPU for large scenes)")
+        ->check(CLI::IsMember({"cpu", "gl", "auto"}));
 
     BenchOptions bench;
     auto* benchCmd =
@@ -37,6 +41,8 @@ int main(int argc, char** argv) {
     benchCmd->add_option("--steps", bench.steps, "Timed steps per repeat")->check(CLI::PositiveNumber);
     benchCmd->add_option("--set", bench.sets, "Override a parameter: key=value (repeatable)");
     benchCmd->add_option("--threads", bench.threads, "OpenMP threads")->check(CLI::NonNegativeNumber);
+    benchCmd->add_option("--backend", bench.backend, "cpu, gl or auto")
+        ->check(CLI::IsMember({"cpu", "gl", "auto"}));
     benchCmd->add_option("--repeats", bench.repeats, "Timed repeats; the median is reported")
         ->check(CLI::PositiveNumber);
 

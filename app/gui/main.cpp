@@ -1,5 +1,6 @@
 // particlelab: the desktop application.
-// Usage: particlelab [PRESET|FILE] [--screenshot FILE [--frames N]] [--measure-fps SECONDS]
+// Usage: particlelab [PRESET|FILE] [--backend cpu|gl|auto] [--screenshot FILE [--frames N]]
+//                    [--measure-fps SECONDS]
 #include "ExperimentDocument.h"
 #include "MainWindow.h"
 #include "SimulationController.h"
@@ -12,6 +13,8 @@
 #include <cstdio>
 
 int main(int argc, char** argv) {
+    // The GPU models' context shares buffers with the viewports (ui/gpu/QtGlContext.h).
+    QApplication::setAttribute(Qt::AA_ShareOpenGLContexts);
     QApplication app(argc, argv);
     QApplication::setApplicationName("ParticleLab");
     QApplication::setOrganizationName("ParticleLab");
@@ -28,6 +31,9 @@ int main(int argc, char** argv) {
     const QCommandLineOption measureFps(
         "measure-fps", "Run for this many seconds as a user would, print the frame rate and quit.",
         "seconds");
+    const QCommandLineOption backend("backend", "Compute backend: cpu, gl or auto (default: as last chosen).",
+                                     "name");
+    parser.addOption(backend);
     parser.addOption(screenshot);
     parser.addOption(frames);
     parser.addOption(measureFps);
@@ -35,6 +41,14 @@ int main(int argc, char** argv) {
     const QStringList args = parser.positionalArguments();
 
     pl::ui::MainWindow window;
+    if (parser.isSet(backend)) {
+        try {
+            window.controller()->setBackend(pl::gl::backendFromName(parser.value(backend).toStdString()));
+        } catch (const std::invalid_argument& e) {
+            std::fprintf(stderr, "particlelab: %s\n", e.what());
+            return 2;
+        }
+    }
     if (!window.document()->open(args.isEmpty() ? QStringLiteral("gas-seed") : args.first(), true)) return 2;
     window.resize(1280, 800);
     window.show();

@@ -77,6 +77,11 @@ public:
     // Particle dump: CSV with a header line.
     virtual void writeParticles(std::ostream& out) const = 0;
 
+    // Where the model computes: "cpu", or the GPU backend's name ("gl").
+    virtual std::string backend() const { return "cpu"; }
+    // Returns once all issued work has completed (a GPU queues steps; timing must wait for them).
+    virtual void finishPendingWork() const {}
+
     // What a viewport draws now.
     virtual SceneView sceneView() const = 0;
     // The mouse tools' entry points; nullptr when the scene has nothing to drag or spawn.

@@ -29,6 +29,7 @@ ParamValues MdModel::params() const {
 void MdModel::setParams(const ParamValues& values) {
     MdParams next = withValues(params_, MdParams::fields(), values);
     next.validate();
+    pullState();
     const MdParams before = params_;
     params_ = next;
     integrator_ = integratorFromName(params_.integrator);
@@ -37,6 +38,7 @@ void MdModel::setParams(const ParamValues& values) {
     if (params_.maxDiameter() != before.maxDiameter()) neighbours_.invalidate();
     forcesValid_ = false; // stiffness, gravity or the force method may have changed
     ensureForces();
+    stateEdited();
     rebaseEnergy();
 }
 
@@ -78,6 +80,7 @@ void MdModel::reset() {
     neighbours_.invalidate();
     forcesValid_ = false;
     ensureForces();
+    stateEdited();
     energyBaseline_ = referenceEnergy_ = totalEnergy();
 }
 
@@ -148,6 +151,7 @@ void MdModel::ensureForces() {
 }
 
 void MdModel::addObstacle(const Obstacle& obstacle) {
+    pullState();
     obstacles_.push_back(obstacle);
     forcesValid_ = false;
     ensureForces();
@@ -221,6 +225,7 @@ std::vector<double> MdModel::sampleSeries() {
 }
 
 std::vector<NamedHistogram> MdModel::histograms() const {
+    pullState();
     std::vector<NamedHistogram> list;
     for (int species : {0, 1})
         if (std::count(state_.species.begin(), state_.species.end(), species) > 0)
@@ -229,6 +234,7 @@ std::vector<NamedHistogram> MdModel::histograms() const {
 }
 
 void MdModel::writeParticles(std::ostream& out) const {
+    pullState();
     const auto precision = out.precision(17);
     out << "id,species,x,y,vx,vy\n";
     for (std::size_t i = 0; i < state_.size(); ++i)

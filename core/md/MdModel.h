@@ -34,6 +34,17 @@ struct MdObservables {
     double energyDrift = 0;             // |E − E₀| / |E₀| since the last reset or user change
 };
 
+// Raw sums behind one sample of observables; CPU loops or GPU reductions fill it.
+struct MdSums {
+    std::array<long long, 2> count{};
+    std::array<double, 2> kinetic{};
+    double px = 0, py = 0;
+    double potential = 0; // pair and gravity
+    double virial = 0;    // ½ Σ_{i<j} r_ij·f_ij
+    double impulse = 0;   // given to the walls since the last sample
+    long long contactsBegun = 0;
+};
+
 struct MdParticle {
     double x, y, vx, vy;
     int species = 0;
@@ -50,6 +61,7 @@ struct SpawnResult {
 class MdModel : public Model, public SceneTools {
 public:
     MdModel();
+    ~MdModel() override = default;
 
     // Model interface
     std::string kind() const override { return "gas"; }
@@ -78,9 +90,12 @@ public:
 
     // Gas-specific API
     const MdParams& parameters() const { return params_; }
-    const MdState& state() const { return state_; }
-    MdObservables observe(); // closes the wall-impulse and contact windows
-    double totalEnergy();    // kinetic + pair + gravity energy of the current state
+    const MdState& state() const {
+        pullState();
+        return state_;
+    }
+    virtual MdObservables observe(); // closes the wall-impulse and contact windows
+    virtual double totalEnergy();    // kinetic + pair + gravity energy of the current state
     NamedHistogram speedHistogram(int species) const;
 
     const std::vector<Obstacle>& obstacles() const override { return obstacles_; }
@@ -98,7 +113,17 @@ public:
     long long removeInRectangle(double x0, double y0, double x1, double y1);
     long long removeNear(double x, double y, double radius);
 
-private:
+protected:
+    // A backend that keeps the particles elsewhere (the GPU) brings state_ up to date here before the
+    // CPU code reads it, and learns through stateEdited() that the CPU code changed it.
+    virtual void pullState() const {}
+    virtual void stateEdited() {}
+    // observe() after the sums: kT, pressures, wall window, contact rate, energy drift (not KS).
+    MdObservables summarise(const MdSums& sums);
+    // A speed histogram with its theory curve and summary line, from counts made elsewhere.
+    NamedHistogram describeSpeedHistogram(int species, double kT, double ks, Histogram counts) const;
+    double histogramRange(double kT, double mass) const; // the plotted speed range [L/T]
+
     // Integrators (MdIntegrators.cpp): one step each, all ending with forces at the new positions.
     void stepVelocityVerlet(double h);
     void stepSymplecticEuler(double h);
@@ -143,7 +168,7 @@ private:
     std::vector<Obstacle> obstacles_;
     MdIntegrator integrator_ = MdIntegrator::VelocityVerlet;
 
-    MdState state_;
+    mutable MdState state_;          // mutable: a GPU backend fills it lazily in pullState()
     NeighbourList neighbours_;       // payload byte per pair: in contact at the last counted evaluation
     double maxDisplacement2_ = -1.0; // since the list build, from the last drift; −1 when unknown
     CellList sortCells_;

@@ -16,48 +16,63 @@ const double kNaN = std::numeric_limits<double>::quiet_NaN();
 } // namespace
 
 MdObservables MdModel::observe() {
+    pullState();
     refreshEnergies();
-    MdObservables o;
-    o.step = step_;
-    o.time = time_;
-    o.particles = state_.size();
+    MdSums sums;
     const double mass[2] = {params_.a.mass, params_.b.mass};
-    double kineticSpecies[2] = {0, 0};
-    long long countSpecies[2] = {0, 0};
-    double virial = 0, impulse = 0;
-    long long began = 0;
     for (std::size_t i = 0; i < state_.size(); ++i) {
         const int s = state_.species[i];
         const double m = mass[s];
-        kineticSpecies[s] += 0.5 * m * (state_.vx[i] * state_.vx[i] + state_.vy[i] * state_.vy[i]);
-        ++countSpecies[s];
-        o.potential += state_.potential[i] + m * params_.gravity * (state_.y[i] - params_.bottom());
-        o.px += m * state_.vx[i];
-        o.py += m * state_.vy[i];
-        virial += state_.virial[i];
-        impulse += state_.wallImpulse[i];
-        began += state_.contactsBegun[i];
+        sums.kinetic[s] += 0.5 * m * (state_.vx[i] * state_.vx[i] + state_.vy[i] * state_.vy[i]);
+        ++sums.count[s];
+        sums.potential += state_.potential[i] + m * params_.gravity * (state_.y[i] - params_.bottom());
+        sums.px += m * state_.vx[i];
+        sums.py += m * state_.vy[i];
+        sums.virial += state_.virial[i];
+        sums.impulse += state_.wallImpulse[i];
+        sums.contactsBegun += state_.contactsBegun[i];
         state_.wallImpulse[i] = 0.0;
         state_.contactsBegun[i] = 0;
     }
-    o.kinetic = kineticSpecies[0] + kineticSpecies[1];
+    MdObservables o = summarise(sums);
+    for (int s = 0; s < 2; ++s) {
+        if (sums.count[s] < 2 || !(o.kTSpecies[s] > 0)) continue;
+        std::vector<double> speeds;
+        speeds.reserve(static_cast<std::size_t>(sums.count[s]));
+        for (std::size_t i = 0; i < state_.size(); ++i)
+            if (state_.species[i] == s) speeds.push_back(std::hypot(state_.vx[i], state_.vy[i]));
+        const double kT = o.kTSpecies[s], m = mass[s];
+        o.ksDistance[s] = ksDistance(speeds, [kT, m](double v) { return rayleighCdf(v, kT, m); });
+    }
+    return o;
+}
+
+MdObservables MdModel::summarise(const MdSums& sums) {
+    MdObservables o;
+    o.step = step_;
+    o.time = time_;
+    o.particles = static_cast<std::size_t>(sums.count[0] + sums.count[1]);
+    o.kinetic = sums.kinetic[0] + sums.kinetic[1];
+    o.potential = sums.potential;
+    o.px = sums.px;
+    o.py = sums.py;
     o.total = o.kinetic + o.potential;
-    const auto n = static_cast<double>(state_.size());
+    const auto n = static_cast<double>(o.particles);
     // Reflecting walls do not conserve momentum: 2 degrees of freedom per disk (physics.md §1).
     o.kT = n > 0 ? o.kinetic / n : 0.0;
     for (int s = 0; s < 2; ++s)
-        o.kTSpecies[s] = countSpecies[s] > 0 ? kineticSpecies[s] / countSpecies[s] : kNaN;
+        o.kTSpecies[s] = sums.count[s] > 0 ? sums.kinetic[s] / static_cast<double>(sums.count[s]) : kNaN;
 
     double area = (params_.right() - params_.left()) * params_.boxHeight;
     for (const auto& ob : obstacles_) area -= ob.grownArea(0.5 * params_.a.diameter);
     // Virial pressure (physics.md §1): P A = N kT + ½ Σ_{i<j} r_ij·f_ij.
     o.pressureIdeal = n * o.kT / area;
-    o.pressureVirial = (n * o.kT + virial) / area;
+    o.pressureVirial = (n * o.kT + sums.virial) / area;
 
     // Wall pressure: impulse per unit wall length per unit time over the last pressure_window.
     const double elapsed = time_ - lastSampleTime_;
     const double perimeter = 2.0 * (params_.right() - params_.left()) + 2.0 * params_.boxHeight;
-    if (elapsed != 0.0) wallWindow_.push_back({impulse, elapsed, perimeter * elapsed});
+    if (elapsed != 0.0) wallWindow_.push_back({sums.impulse, elapsed, perimeter * elapsed});
     double windowTime = 0.0;
     for (const auto& w : wallWindow_) windowTime += std::abs(w.duration);
     while (wallWindow_.size() > 1 &&
@@ -69,25 +84,21 @@ MdObservables MdModel::observe() {
     for (const auto& w : wallWindow_) windowImpulse += w.impulse, windowPerimeterTime += w.perimeterTime;
     o.pressureWall = windowPerimeterTime != 0.0 ? windowImpulse / windowPerimeterTime : kNaN;
 
-    o.collisionRate = elapsed != 0.0 ? 0.5 * static_cast<double>(began) / std::abs(elapsed) : 0.0;
+    o.collisionRate =
+        elapsed != 0.0 ? 0.5 * static_cast<double>(sums.contactsBegun) / std::abs(elapsed) : 0.0;
     lastSampleTime_ = time_;
-
-    for (int s = 0; s < 2; ++s) {
-        o.ksDistance[s] = kNaN;
-        if (countSpecies[s] < 2 || !(o.kTSpecies[s] > 0)) continue;
-        std::vector<double> speeds;
-        speeds.reserve(static_cast<std::size_t>(countSpecies[s]));
-        for (std::size_t i = 0; i < state_.size(); ++i)
-            if (state_.species[i] == s) speeds.push_back(std::hypot(state_.vx[i], state_.vy[i]));
-        const double kT = o.kTSpecies[s], m = mass[s];
-        o.ksDistance[s] = ksDistance(speeds, [kT, m](double v) { return rayleighCdf(v, kT, m); });
-    }
+    o.ksDistance = {kNaN, kNaN};
     o.energyDrift =
         energyBaseline_ != 0.0 ? std::abs(o.total - energyBaseline_) / std::abs(energyBaseline_) : 0.0;
     return o;
 }
 
+double MdModel::histogramRange(double kT, double mass) const {
+    return kT > 0 ? kHistogramSigmas * std::sqrt(kT / mass) : 1.0;
+}
+
 NamedHistogram MdModel::speedHistogram(int species) const {
+    pullState();
     const double m = params_.species(species).mass;
     std::vector<double> speeds;
     double kinetic = 0.0;
@@ -98,18 +109,23 @@ NamedHistogram MdModel::speedHistogram(int species) const {
         speeds.push_back(std::sqrt(v2));
     }
     const double kT = speeds.empty() ? 0.0 : kinetic / static_cast<double>(speeds.size());
-    const double vmax = kT > 0 ? kHistogramSigmas * std::sqrt(kT / m) : 1.0;
+    Histogram counts(0.0, histogramRange(kT, m), static_cast<std::size_t>(params_.histogramBins));
+    for (double v : speeds) counts.add(v);
+    const double ks = ksDistance(speeds, [kT, m](double v) { return rayleighCdf(v, kT, m); });
+    return describeSpeedHistogram(species, kT, ks, std::move(counts));
+}
+
+NamedHistogram MdModel::describeSpeedHistogram(int species, double kT, double ks, Histogram counts) const {
+    const double m = params_.species(species).mass;
     NamedHistogram h;
     h.name = species == 0 ? "speed_a" : "speed_b";
     h.label = species == 0 ? "species A" : "species B";
     h.axis = "speed [L/T]";
-    h.counts = Histogram(0.0, vmax, static_cast<std::size_t>(params_.histogramBins));
-    for (double v : speeds) h.counts.add(v);
+    h.counts = std::move(counts);
     h.theoryDensity = [kT, m](double v) { return rayleighPdf(v, kT, m); };
-    const double ks = ksDistance(speeds, [kT, m](double v) { return rayleighCdf(v, kT, m); });
     std::ostringstream summary;
     summary.precision(3);
-    const bool mixture = std::count(state_.species.begin(), state_.species.end(), 1 - species) > 0;
+    const bool mixture = params_.a.count > 0 && params_.b.count > 0;
     summary << (mixture ? (species == 0 ? "A: " : "B: ") : "") << "kT = " << kT << ", KS distance " << ks;
     h.summary = summary.str();
     return h;

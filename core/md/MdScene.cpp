@@ -14,6 +14,7 @@ constexpr double kColourScaleOverRms = 2.8;
 } // namespace
 
 SceneView MdModel::sceneView() const {
+    pullState();
     SceneView view;
     view.left = params_.left();
     view.right = 0.5 * params_.boxWidth; // the whole box, also when the piston closes part of it
@@ -47,6 +48,7 @@ SceneView MdModel::sceneView() const {
 std::string MdModel::spawnInRectangle(double x0, double y0, double x1, double y1) {
     // New disks join at the gas's current temperature (the initial one when the box is empty), so
     // spawning adds particles without heating or cooling what is there.
+    pullState();
     double kinetic = 0;
     for (std::size_t i = 0; i < state_.size(); ++i)
         kinetic += 0.5 * params_.species(state_.species[i]).mass *
@@ -61,11 +63,13 @@ std::string MdModel::spawnInRectangle(double x0, double y0, double x1, double y1
 void MdModel::scaleKineticEnergy(double factor) {
     if (!(factor > 0) || !std::isfinite(factor))
         throw std::invalid_argument("kinetic energy factor must be positive and finite");
+    pullState();
     const double s = std::sqrt(factor);
     for (std::size_t i = 0; i < state_.size(); ++i) {
         state_.vx[i] *= s;
         state_.vy[i] *= s;
     }
+    stateEdited();
     rebaseEnergy(); // a deliberate change of energy is not drift
 }
 

@@ -40,6 +40,7 @@ void MdModel::populationChanged() {
     params_.b.count = static_cast<long long>(state_.size()) - params_.a.count;
     neighbours_.invalidate();
     forcesValid_ = false;
+    stateEdited();
     ensureForces(); // also resets the previous positions: a spawned disk begins no contact
     rebaseEnergy();
 }
@@ -47,6 +48,7 @@ void MdModel::populationChanged() {
 SpawnResult MdModel::spawnRectangle(double x0, double y0, double x1, double y1, int species, double kT) {
     if (x1 < x0) std::swap(x0, x1);
     if (y1 < y0) std::swap(y0, y1);
+    pullState();
     const auto& sp = params_.species(species);
     const double spacing = kSpawnSpacing * sp.diameter;
     const auto nx = std::max<long long>(1, static_cast<long long>(std::floor((x1 - x0) / spacing)) + 1);
@@ -105,6 +107,7 @@ void MdModel::placeParticles(const std::vector<MdParticle>& particles) {
 long long MdModel::removeInRectangle(double x0, double y0, double x1, double y1) {
     if (x1 < x0) std::swap(x0, x1);
     if (y1 < y0) std::swap(y0, y1);
+    pullState();
     const auto removed = static_cast<long long>(state_.retain([&](std::size_t i) {
         return !(state_.x[i] >= x0 && state_.x[i] <= x1 && state_.y[i] >= y0 && state_.y[i] <= y1);
     }));
@@ -113,6 +116,7 @@ long long MdModel::removeInRectangle(double x0, double y0, double x1, double y1)
 }
 
 long long MdModel::removeNear(double x, double y, double radius) {
+    pullState();
     const double r2 = radius * radius;
     const auto removed = static_cast<long long>(state_.retain([&](std::size_t i) {
         const double dx = state_.x[i] - x, dy = state_.y[i] - y;

@@ -20,8 +20,10 @@ ParamValues PbfModel::params() const {
 void PbfModel::setParams(const ParamValues& values) {
     PbfParams next = withValues(params_, PbfParams::fields(), values);
     next.validate();
+    pullState();
     params_ = next;
     refreshDerived();
+    stateEdited();
 }
 
 void PbfModel::reset(const Preset& preset) {
@@ -50,6 +52,7 @@ void PbfModel::reset() {
     errorMax_.clear();
     state_.clear();
     if (params_.hasFill()) spawnLattice(params_.fillX0, params_.fillY0, params_.fillX1, params_.fillY1);
+    stateEdited();
 }
 
 Preset PbfModel::toPreset() const {
@@ -161,11 +164,13 @@ void PbfModel::moveObstacle(std::size_t index, double x, double y, double vx, do
 void PbfModel::scaleKineticEnergy(double factor) {
     if (!(factor > 0) || !std::isfinite(factor))
         throw std::invalid_argument("kinetic energy factor must be positive and finite");
+    pullState();
     const double s = std::sqrt(factor);
     for (std::size_t i = 0; i < state_.size(); ++i) {
         state_.vx[i] *= s;
         state_.vy[i] *= s;
     }
+    stateEdited();
 }
 
 } // namespace pl

@@ -30,6 +30,7 @@ struct PbfObservables {
 class PbfModel : public Model, public SceneTools {
 public:
     PbfModel();
+    ~PbfModel() override = default;
 
     std::string kind() const override { return "fluid"; }
     const std::vector<ParamSpec>& paramSpecs() const override { return PbfParams::describe(); }
@@ -65,14 +66,22 @@ public:
 
     // Fluid-specific API
     const PbfParams& parameters() const { return params_; }
-    const PbfState& state() const { return state_; }
+    const PbfState& state() const {
+        pullState();
+        return state_;
+    }
     PbfObservables observe() const;
     double restDensity() const { return restDensity_; }
     // Mean and max density error measured before each iteration of the last step, then after the last one.
     std::vector<double> iterationErrorMean() const;
     std::vector<double> iterationErrorMax() const;
 
-private:
+protected:
+    // A backend that keeps the particles elsewhere (the GPU) brings state_ (and the per-iteration errors)
+    // up to date here before the CPU code reads them, and learns through stateEdited() of CPU changes.
+    virtual void pullState() const {}
+    virtual void stateEdited() {}
+
     // Algorithm 1, line by line.
     void applyExternalForcesAndPredict();
     void findNeighbours();
@@ -98,7 +107,7 @@ private:
     PbfParams params_;
     std::uint64_t seed_ = 1;
     std::vector<Obstacle> obstacles_;
-    PbfState state_;
+    mutable PbfState state_; // mutable: a GPU backend fills it lazily in pullState()
     pbf::Kernels kernels_;
     pbf::ArtificialPressure scorr_;
     double restDensity_ = 1.0;
@@ -113,7 +122,7 @@ private:
     std::vector<double> omega_, nextVx_, nextVy_;
     pbf::Neighbours neighbours_;
 
-    std::vector<double> errorMean_, errorMax_; // before iteration k of the last step
+    mutable std::vector<double> errorMean_, errorMax_; // before iteration k of the last step
     std::int64_t step_ = 0;
     double time_ = 0.0;
     long long drained_ = 0;

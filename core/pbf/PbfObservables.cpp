@@ -37,6 +37,7 @@ std::vector<double> PbfModel::densityConstraints(std::vector<int>* neighboursWit
 }
 
 PbfObservables PbfModel::observe() const {
+    pullState();
     PbfObservables o;
     o.step = step_;
     o.time = time_;
@@ -123,18 +124,21 @@ std::vector<double> PbfModel::sampleSeries() {
 }
 
 std::vector<double> PbfModel::iterationErrorMean() const {
+    pullState();
     std::vector<double> errors = errorMean_;
     errors.push_back(observe().densityErrorMean);
     return errors;
 }
 
 std::vector<double> PbfModel::iterationErrorMax() const {
+    pullState();
     std::vector<double> errors = errorMax_;
     errors.push_back(observe().densityErrorMax);
     return errors;
 }
 
 std::vector<NamedProfile> PbfModel::profiles() const {
+    pullState();
     // Entry k: the error after k corrections of the last step; the last entry is the step's result.
     const PbfObservables now = observe();
     NamedProfile mean{"density_error_mean", {}, errorMean_}, max{"density_error_max", {}, errorMax_};
@@ -148,6 +152,7 @@ std::vector<NamedProfile> PbfModel::profiles() const {
 }
 
 void PbfModel::writeParticles(std::ostream& out) const {
+    pullState();
     const std::vector<double> c = densityConstraints();
     out << "index,x,y,vx,vy,density_ratio\n";
     for (std::size_t i = 0; i < state_.size(); ++i)

@@ -17,6 +17,7 @@ constexpr double kMinimumSeparation = 0.5;
 } // namespace
 
 SceneView PbfModel::sceneView() const {
+    pullState();
     SceneView view;
     view.left = 0;
     view.bottom = 0;
@@ -53,8 +54,10 @@ std::string PbfModel::Spawned::message() const {
 }
 
 std::string PbfModel::spawnInRectangle(double x0, double y0, double x1, double y1) {
+    pullState();
     const long long before = static_cast<long long>(state_.size());
     Spawned result = spawnLattice(x0, y0, x1, y1);
+    stateEdited();
     std::string text = result.message();
     const long long over = before + result.added - params_.maxParticles;
     if (params_.drain && over > 0) text += "; the drain will remove the " + std::to_string(over) + " lowest";

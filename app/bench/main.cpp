@@ -1,0 +1,127 @@
+// particlelab-bench: the GPU benchmark runner. Links core + gl only (no Qt), so it runs headless on a
+// machine with nothing but a GL driver. Prints one JSON line per measurement and a table at the end.
+#include "gl/Backends.h"
+#include "gl/MachineBenchmark.h"
+#include "gl/MdModelGL.h"
+#include "gl/PbfModelGL.h"
+
+#include <CLI/CLI.hpp>
+#include <epoxy/gl.h>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+
+namespace {
+
+// Bytes the gas's GPU step must move per disk (velocity Verlet), from the kernels' loads and stores:
+// count pass reads pos, vel, acc, tag (28) and writes (cell, slot) (8) plus a 4-byte atomic; the
+// scatter pass reads the same 28 + 8 + a 4-byte cell start and writes pos, vel, tag (20); the scan
+// reads, writes and clears about half a count per disk (6); the force pass reads pos, vel, tag (20)
+// and writes acc (8). Neighbour reads hit the cache in cell order and are not counted.
+constexpr double kGasBytesPerParticleStep = 40 + 60 + 6 + 28;
+
+// The fluid's (5 iterations): predict count 16 + 12, scatter 28 + 24 (x, v, x*), scan 3, per iteration
+// λ 8 + 4 and Δx 12 + 8, velocity 16 + 8. Neighbour reads hit the cache and are not counted.
+constexpr int kFluidIterations = 5;
+constexpr double kFluidBytesPerParticleStep = 28 + 52 + 3 + kFluidIterations * (12 + 20) + 24;
+
+} // namespace
+
+int main(int argc, char** argv) {
+    CLI::App app{"ParticleLab GPU benchmark: particle-steps per second against N, headless"};
+    std::vector<std::size_t> gasSizes{4096, 16384, 65536, 262144, 1048576, 4194304};
+    std::vector<std::size_t> fluidSizes{10000, 40000, 160000, 640000, 1048576};
+    std::size_t cpuMax = 65536;
+    std::string out;
+    pl::gl::BenchSettings settings;
+    app.add_option("--gas", gasSizes, "Gas sizes (disks)");
+    app.add_option("--fluid", fluidSizes, "Fluid sizes (particles, 5 iterations)");
+    app.add_option("--cpu-max", cpuMax, "Largest N also timed on the CPU model (0: none)");
+    app.add_option("--repeats", settings.repeats, "Timed repeats per point; the median is reported");
+    app.add_option("--seconds", settings.targetSeconds, "Target seconds per repeat");
+    app.add_option("--out", out, "Also write the JSON lines to this file");
+    bool glDebug = false;
+    app.add_flag("--gl-debug", glDebug, "Print the driver's debug messages (performance remarks)");
+    CLI11_PARSE(app, argc, argv);
+
+    std::ofstream file;
+    if (!out.empty()) file.open(out);
+    auto emit = [&](const nlohmann::json& j) {
+        std::cout << j.dump() << std::endl;
+        if (file) file << j.dump() << '\n';
+    };
+    std::shared_ptr<pl::gl::GlContext> context;
+    try {
+        context = pl::gl::sharedHeadlessContext();
+    } catch (const pl::gl::GlUnavailable& e) {
+        std::cerr << "particlelab-bench: " << e.what() << '\n';
+        return 2;
+    }
+    if (glDebug) {
+        // Driver remarks (e.g. buffers moved between video and host memory) go to stderr, once each.
+        glEnable(GL_DEBUG_OUTPUT);
+        glDebugMessageCallback(
+            [](GLenum, GLenum type, GLuint id, GLenum, GLsizei, const GLchar* message, const void*) {
+                static std::vector<GLuint> seen;
+                if (std::find(seen.begin(), seen.end(), id) != seen.end() || seen.size() > 50) return;
+                seen.push_back(id);
+                std::fprintf(stderr, "GL debug (type 0x%x, id %u): %s\n", type, id, message);
+            },
+            nullptr);
+    }
+    const auto& info = context->info();
+    const double copy = pl::gl::measureCopyBandwidth(std::size_t{256} << 20, 5);
+    emit({{"context", info.summary()}, {"copy_bandwidth_bytes_per_s", copy}});
+
+    std::vector<pl::gl::BenchPoint> points;
+    auto sweep = [&](const std::string& scene, const std::vector<std::size_t>& sizes, double bytes,
+                     double goalBytes) {
+        for (std::size_t n : sizes) {
+            const pl::Preset preset =
+                scene == "gas" ? pl::gl::scaledGasPreset(n) : pl::gl::scaledFluidPreset(n);
+            for (const std::string backend : {"gl", "cpu"}) {
+                if (backend == "cpu" && n > cpuMax) continue;
+                auto choice = pl::gl::createModel(scene, pl::gl::backendFromName(backend), &preset, context);
+                if (!choice.message.empty()) std::cerr << choice.message << '\n';
+                const auto p = pl::gl::timeModel(*choice.model, scene, backend, settings);
+                const bool gpu = backend == "gl";
+                emit({{"scene", scene},
+                      {"backend", backend},
+                      {"particles", p.particles},
+                      {"particle_steps_per_s", p.particleStepsPerSecond},
+                      {"us_per_step", p.microsecondsPerStep},
+                      {"dispatches_per_step", p.dispatchesPerStep},
+                      {"model_bytes_per_particle_step", gpu ? bytes : 0.0},
+                      {"achieved_bandwidth_fraction", gpu ? p.particleStepsPerSecond * bytes / copy : 0.0},
+                      {"goal_particle_steps_per_s", copy / goalBytes}});
+                points.push_back(p);
+            }
+        }
+    };
+    sweep("gas", gasSizes, kGasBytesPerParticleStep, 150.0);
+    sweep("fluid", fluidSizes, kFluidBytesPerParticleStep, 700.0);
+    // Where the time goes at the largest size: GPU timestamps around each pass.
+    if (!gasSizes.empty()) {
+        const pl::Preset preset = pl::gl::scaledGasPreset(gasSizes.back());
+        pl::gl::MdModelGL model(context);
+        model.reset(preset);
+        for (int s = 0; s < 5; ++s) model.step();
+        model.setProfiling(true);
+        constexpr int kProfiledSteps = 50;
+        for (int s = 0; s < kProfiledSteps; ++s) model.step();
+        for (const auto& [pass, ns] : model.profile())
+            emit({{"scene", "gas"},
+                  {"particles", gasSizes.back()},
+                  {"pass", pass},
+                  {"us_per_step", ns / kProfiledSteps / 1e3}});
+    }
+    std::printf("\n%s\nGL copy bandwidth %.3g B/s\n%-6s %-4s %10s %14s %10s %6s\n", info.summary().c_str(),
+                copy, "scene", "bk", "N", "p-steps/s", "us/step", "disp");
+    for (const auto& p : points)
+        std::printf("%-6s %-4s %10zu %14.4g %10.2f %6d\n", p.scene.c_str(), p.backend.c_str(), p.particles,
+                    p.particleStepsPerSecond, p.microsecondsPerStep, p.dispatchesPerStep);
+    return 0;
+}

@@ -1,0 +1,39 @@
+// The one place that chooses a backend: the CPU reference, or the GPU models of this library.
+#pragma once
+
+#include "GlContext.h"
+#include "common/Model.h"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace pl::gl {
+
+enum class Backend { Cpu, Gl, Auto };
+
+Backend backendFromName(const std::string& name); // "cpu", "gl", "auto"; throws std::invalid_argument
+std::string backendName(Backend backend);
+const std::vector<std::string>& backendNames();
+
+// Kinds that have a GPU model.
+bool hasGpuModel(const std::string& kind);
+
+// Particles from which the GPU model is worth its hand-over costs on this context: a software
+// rasteriser shares the CPU's cores and never is; a real GPU wins from a few thousand particles.
+std::size_t autoGpuThreshold(const ContextInfo& info);
+
+struct BackendChoice {
+    std::unique_ptr<Model> model;
+    Backend backend = Backend::Cpu; // what was made
+    std::string message;            // why, when it is not what was asked for (empty otherwise)
+};
+
+// A model of kind on the asked backend, reset to preset (when given). For Gl and Auto the shared
+// headless context is used unless context is given; a missing GL 4.3 context gives the CPU model and a
+// message, never an exception. Auto picks the GPU when the preset's particle count reaches the
+// threshold. Throws PresetError for a bad preset, like instantiate().
+BackendChoice createModel(const std::string& kind, Backend backend, const Preset* preset = nullptr,
+                          std::shared_ptr<GlContext> context = nullptr);
+
+} // namespace pl::gl

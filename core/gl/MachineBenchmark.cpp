@@ -1,0 +1,125 @@
+// Timing helpers shared by particlelab-bench and the desktop's benchmark dialog.
+#include "MachineBenchmark.h"
+
+#include "GlProgram.h"
+#include "MdModelGL.h"
+#include "PbfModelGL.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+namespace pl::gl {
+
+namespace {
+using Clock = std::chrono::steady_clock;
+
+double median(std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    return v.empty() ? 0.0 : v[v.size() / 2];
+}
+
+double secondsFor(Model& model, int steps) {
+    const auto start = Clock::now();
+    for (int s = 0; s < steps; ++s) model.step();
+    model.finishPendingWork();
+    return std::chrono::duration<double>(Clock::now() - start).count();
+}
+} // namespace
+
+Preset scaledGasPreset(std::size_t n) {
+    Preset p;
+    p.model = "gas";
+    p.seed = 20240501;
+    const double side = 2.0 * std::sqrt(static_cast<double>(n) / 4096.0);
+    p.params = {{"box_width", side},
+                {"box_height", side},
+                {"count_a", static_cast<double>(n)},
+                {"count_b", 0.0},
+                {"diameter_a", 0.01},
+                {"mass_a", 1.0},
+                {"stiffness", 1000.0},
+                {"init_velocity", std::string("fixed-speed")},
+                {"init_speed", 1.0},
+                {"init_placement", std::string("random")},
+                {"integrator", std::string("velocity-verlet")},
+                {"dt", 1e-4},
+                {"max_particles", static_cast<double>(std::max<std::size_t>(n, 1))}};
+    return p;
+}
+
+Preset scaledFluidPreset(std::size_t n) {
+    Preset p;
+    p.model = "fluid";
+    p.seed = 20240501;
+    const double h = 0.8, spacing = 0.5 * h;
+    const double side = std::ceil(std::sqrt(static_cast<double>(n))) * spacing; // the block's edge
+    p.params = {{"kernel", std::string("2d")},
+                {"self_density", true},
+                {"rest_density_source", std::string("spawn-lattice")},
+                {"epsilon", 1.0},
+                {"h", h},
+                {"spawn_spacing", 0.5},
+                {"particle_radius", 0.2},
+                {"iterations", 5.0},
+                {"dt", 0.01},
+                {"world_width", 2.0 * side + 1.0},
+                {"world_height", 1.5 * side + 1.0},
+                {"fill_x0", 0.0},
+                {"fill_y0", 0.0},
+                {"fill_x1", side},
+                {"fill_y1", side},
+                {"max_particles", static_cast<double>(2 * n + 1024)}};
+    return p;
+}
+
+BenchPoint timeModel(Model& model, const std::string& scene, const std::string& backend,
+                     const BenchSettings& settings, const std::function<bool()>& cancel) {
+    BenchPoint point{scene, backend, model.particleCount()};
+    const double warm = secondsFor(model, settings.warmupSteps);
+    const double perStep = std::max(warm / std::max(settings.warmupSteps, 1), 1e-7);
+    const int steps = std::max(settings.minSteps, static_cast<int>(settings.targetSeconds / perStep));
+    std::vector<double> rates;
+    for (int r = 0; r < settings.repeats; ++r) {
+        if (cancel && cancel()) return point;
+        const double seconds = secondsFor(model, steps);
+        rates.push_back(steps / seconds);
+    }
+    const double stepsPerSecond = median(rates);
+    point.particleStepsPerSecond = stepsPerSecond * static_cast<double>(point.particles);
+    point.microsecondsPerStep = 1e6 / stepsPerSecond;
+    if (auto* gas = dynamic_cast<MdModelGL*>(&model)) point.dispatchesPerStep = gas->dispatchesLastStep();
+    if (auto* fluid = dynamic_cast<PbfModelGL*>(&model))
+        point.dispatchesPerStep = fluid->dispatchesLastStep();
+    return point;
+}
+
+double measureCopyBandwidth(std::size_t bytes, int repeats) {
+    ComputeProgram copy("common/copy.comp");
+    Buffer from, to;
+    from.reserve(bytes);
+    to.reserve(bytes);
+    from.fillZero(bytes);
+    const std::size_t items = bytes / 16; // one vec4 per invocation
+    copy.use();
+    copy.set("count", static_cast<unsigned>(items));
+    from.bind(0);
+    to.bind(1);
+    std::vector<double> rates;
+    for (int r = 0; r < repeats + 1; ++r) {
+        glFinish();
+        const auto start = Clock::now();
+        constexpr int kCopies = 10;
+        for (int c = 0; c < kCopies; ++c) {
+            copy.dispatch(items, 256);
+            storageBarrier();
+        }
+        glFinish();
+        const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
+        if (r > 0)
+            rates.push_back(2.0 * static_cast<double>(items * 16) * kCopies / seconds); // first: warm-up
+    }
+    return median(rates);
+}
+
+} // namespace pl::gl

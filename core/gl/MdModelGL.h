@@ -1,0 +1,55 @@
+// The gas on the GPU: the CPU model's parameters, presets, tools and observables, with the hot stages
+// (drift + counting sort, forces, reductions, histograms) as OpenGL 4.3 compute shaders in float32.
+// The CPU state is brought up to date only when something reads it (pullState).
+#pragma once
+
+#include "GlContext.h"
+#include "md/MdModel.h"
+
+#include <memory>
+
+namespace pl::gl {
+
+struct MdGpu;
+class GpuCellGrid;
+
+class MdModelGL : public MdModel {
+public:
+    // Needs a current-able 4.3 context; throws GlUnavailable or ShaderError.
+    explicit MdModelGL(std::shared_ptr<GlContext> context);
+    ~MdModelGL() override;
+
+    void step() override;
+    std::string backend() const override { return "gl"; }
+    void finishPendingWork() const override; // glFinish in the model's context
+    MdObservables observe() override;
+    double totalEnergy() override;
+    std::vector<NamedHistogram> histograms() const override;
+
+    // Whether the current settings run on the GPU (rk4 and the all-pairs comparison run on the CPU).
+    bool stepsOnGpu() const;
+    const ContextInfo& contextInfo() const;
+    // Dispatches issued by the last step (for the benchmark's cost accounting).
+    int dispatchesLastStep() const;
+    // GPU time of each pass of the next steps, from timestamp queries (costs a sync per step).
+    void setProfiling(bool on);
+    // Pass name → nanoseconds, summed over the steps since profiling was switched on.
+    std::vector<std::pair<std::string, double>> profile() const;
+    // The counting-sort grid of the last step (tests check the order against it).
+    const GpuCellGrid& cellGrid() const;
+
+protected:
+    void pullState() const override;
+    void stateEdited() override;
+
+private:
+    void upload();
+    void drift(double kickBefore, double h, double kickAfter);
+    void forces(bool countContacts, double kick, bool energies = false);
+    MdSums gpuSums(); // energies and reductions at the current positions
+    void checkGpuHealth();
+
+    std::unique_ptr<MdGpu> gpu_;
+};
+
+} // namespace pl::gl
