@@ -84,6 +84,9 @@ public:
 
     // What a viewport draws now.
     virtual SceneView sceneView() const = 0;
+    // The same for a viewport whose GL context shares objects with the model's: a GPU model may leave
+    // the particles in its buffers (SceneView::gpu) instead of copying them out.
+    virtual SceneView sceneViewSharingGpu() const { return sceneView(); }
     // The mouse tools' entry points; nullptr when the scene has nothing to drag or spawn.
     virtual SceneTools* tools() { return nullptr; }
 };

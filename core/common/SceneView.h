@@ -17,6 +17,19 @@ enum class ColourMap {
     Category, // value is a small integer: species or beam of origin
 };
 
+// Particles that stay in GPU buffers (OpenGL names) of a context the viewport shares: drawn from there,
+// without a copy through the CPU. Layouts are those of the compute shaders (std430).
+struct GpuParticles {
+    unsigned positions = 0;        // vec2 per particle [L]
+    unsigned velocities = 0;       // vec2 per particle [L/T]
+    unsigned accelerations = 0;    // vec2 per particle, 0 when none: true velocity = v + pendingKick · a
+    unsigned tags = 0;             // uint per particle with the species in bit 0; 0 when one species
+    float pendingKick = 0.0f;      // [T]
+    std::array<float, 2> radius{}; // per species [L]
+    float inverseColourMax = 1.0f; // colour value = |v| · this
+    std::size_t count = 0;
+};
+
 struct SceneView {
     // World rectangle shown [L]; the box outline when drawBox.
     double left = -1, bottom = -1, right = 1, top = 1;
@@ -32,8 +45,9 @@ struct SceneView {
     std::vector<std::string> categories; // legend entries for ColourMap::Category
 
     std::vector<Obstacle> obstacles;
-    std::optional<double> pistonX; // a vertical wall from bottom to top at this x
-    std::string hint;              // faint instruction across the view (e.g. while a tank is empty)
+    std::optional<double> pistonX;   // a vertical wall from bottom to top at this x
+    std::string hint;                // faint instruction across the view (e.g. while a tank is empty)
+    std::optional<GpuParticles> gpu; // set instead of x, y, radius, value by sceneViewSharingGpu()
 
     std::size_t size() const { return x.size(); }
 };

@@ -27,6 +27,8 @@ public:
     // Makes the context current on the calling thread (cheap when it already is).
     virtual void makeCurrent() = 0;
     virtual const ContextInfo& info() const = 0;
+    // Whether the desktop's viewports share objects with this context (they can draw its buffers).
+    virtual bool sharesWithViewports() const { return false; }
 };
 
 // A context with no window: EGL device enumeration preferring a hardware device, then Mesa's

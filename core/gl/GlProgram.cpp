@@ -132,37 +132,50 @@ ComputeProgram::~ComputeProgram() {
 ComputeProgram& ComputeProgram::operator=(ComputeProgram&& other) noexcept {
     std::swap(program_, other.program_);
     std::swap(path_, other.path_);
-    std::swap(locations_, other.locations_);
+    std::swap(uniforms_, other.uniforms_);
     return *this;
 }
 
-GLint ComputeProgram::location(const char* name) {
-    auto it = locations_.find(name);
-    if (it == locations_.end()) it = locations_.emplace(name, glGetUniformLocation(program_, name)).first;
-    return it->second;
+ComputeProgram::Uniform* ComputeProgram::changed(const char* name, std::array<std::uint32_t, 4> bits) {
+    auto it = uniforms_.find(name);
+    if (it == uniforms_.end())
+        it = uniforms_.emplace(name, Uniform{glGetUniformLocation(program_, name)}).first;
+    Uniform& u = it->second;
+    if (u.location < 0 || (u.set && u.last == bits)) return nullptr;
+    u.last = bits;
+    u.set = true;
+    return &u;
 }
+
+namespace {
+template <class... T> std::array<std::uint32_t, 4> bitsOf(T... values) {
+    std::array<std::uint32_t, 4> bits{};
+    std::size_t k = 0;
+    ((std::memcpy(&bits[k++], &values, sizeof(std::uint32_t))), ...);
+    return bits;
+}
+} // namespace
 
 void ComputeProgram::set(const char* name, float v) {
-    glUniform1f(location(name), v);
+    if (Uniform* u = changed(name, bitsOf(v))) glUniform1f(u->location, v);
 }
 void ComputeProgram::set(const char* name, int v) {
-    glUniform1i(location(name), v);
+    if (Uniform* u = changed(name, bitsOf(v))) glUniform1i(u->location, v);
 }
 void ComputeProgram::set(const char* name, unsigned v) {
-    glUniform1ui(location(name), v);
+    if (Uniform* u = changed(name, bitsOf(v))) glUniform1ui(u->location, v);
 }
 void ComputeProgram::set(const char* name, float x, float y) {
-    glUniform2f(location(name), x, y);
+    if (Uniform* u = changed(name, bitsOf(x, y))) glUniform2f(u->location, x, y);
 }
 void ComputeProgram::set(const char* name, int x, int y) {
-    glUniform2i(location(name), x, y);
+    if (Uniform* u = changed(name, bitsOf(x, y))) glUniform2i(u->location, x, y);
 }
-
 void ComputeProgram::set(const char* name, unsigned x, unsigned y) {
-    glUniform2ui(location(name), x, y);
+    if (Uniform* u = changed(name, bitsOf(x, y))) glUniform2ui(u->location, x, y);
 }
 void ComputeProgram::set(const char* name, float x, float y, float z, float w) {
-    glUniform4f(location(name), x, y, z, w);
+    if (Uniform* u = changed(name, bitsOf(x, y, z, w))) glUniform4f(u->location, x, y, z, w);
 }
 
 void ComputeProgram::dispatch(std::size_t items, unsigned localSize) const {

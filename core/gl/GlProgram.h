@@ -3,9 +3,13 @@
 
 #include <epoxy/gl.h>
 
+#include <array>
 #include <cstddef>
+#include <cstdint>
+#include <cstring>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <unordered_map>
 #include <utility>
 #include <vector>
@@ -42,6 +46,8 @@ public:
 
     void use() const { glUseProgram(program_); }
     // Uniform setters of the program in use; unknown names are ignored (the compiler may drop them).
+    // Names must be string literals (they are kept as views), and a value equal to the last one set is
+    // not sent again: a small step issues a few dispatches, and their uniforms were most of its CPU time.
     void set(const char* name, float v);
     void set(const char* name, int v);
     void set(const char* name, unsigned v);
@@ -53,10 +59,16 @@ public:
     void dispatch(std::size_t items, unsigned localSize) const;
 
 private:
-    GLint location(const char* name);
+    struct Uniform {
+        GLint location = -1;
+        std::array<std::uint32_t, 4> last{}; // bits of the last value set
+        bool set = false;
+    };
+    // The uniform's record, or nullptr when the value equals the last one (nothing to send).
+    Uniform* changed(const char* name, std::array<std::uint32_t, 4> bits);
     GLuint program_ = 0;
     std::string path_;
-    std::unordered_map<std::string, GLint> locations_;
+    std::unordered_map<std::string_view, Uniform> uniforms_;
 };
 
 // Memory barrier between dependent dispatches: on a real GPU they overlap otherwise.

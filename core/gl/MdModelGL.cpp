@@ -13,6 +13,9 @@ namespace pl::gl {
 namespace {
 
 constexpr unsigned kDriftLocal = 256, kForceLocal = 128, kReduceLocal = 256;
+// md_drift_small.comp sorts in one work group of 1024 with 2048 cell counts in shared memory; beyond
+// 16 disks per invocation the three-dispatch path is faster anyway.
+constexpr std::size_t kSmallSortCells = 2048, kSmallSortThreads = 1024, kSmallSortMaxDisks = 16384;
 constexpr std::size_t kSumsPerGroup = 9; // md_observe.comp's kSums
 constexpr unsigned kFineBins = 4096;     // KS distance from a histogram this fine (see observe())
 constexpr double kFineSigmas = 10.0;     // fine bins span 0 … 10 √(kT/m)
@@ -29,8 +32,8 @@ struct GpuObstacle { // std430 layout of md_boundaries.glsl's GpuObstacle
 
 struct MdGpu {
     std::shared_ptr<GlContext> context;
-    ComputeProgram drift{"md/md_drift.comp"}, forces{"md/md_forces.comp"}, observe{"md/md_observe.comp"},
-        histogram{"md/md_histogram.comp"};
+    ComputeProgram drift{"md/md_drift.comp"}, driftSmall{"md/md_drift_small.comp"},
+        forces{"md/md_forces.comp"}, observe{"md/md_observe.comp"}, histogram{"md/md_histogram.comp"};
     GpuCellGrid grid;
     Buffer pos[2], vel[2], tag[2], acc, slots, status, impulseSums, energy, sums, bins, obstacles;
     int current = 0;          // which of the ping-pong pairs holds the cell-ordered state
@@ -105,6 +108,25 @@ void MdModelGL::setProfiling(bool on) {
 
 std::vector<std::pair<std::string, double>> MdModelGL::profile() const {
     return gpu_->passTimes;
+}
+
+SceneView MdModelGL::sceneViewSharingGpu() const {
+    const MdGpu& g = *gpu_;
+    if (!g.context->sharesWithViewports() || !g.gpuCurrent || g.cpuCurrent) return sceneView();
+    g.context->makeCurrent();
+    glFinish(); // another context reads these buffers next: the steps must be complete
+    SceneView view = sceneFrame();
+    GpuParticles p;
+    p.positions = g.pos[g.current].id();
+    p.velocities = g.vel[g.current].id();
+    p.accelerations = g.acc.id();
+    p.tags = g.tag[g.current].id();
+    p.pendingKick = float(g.pendingKick);
+    p.radius = {float(0.5 * params_.a.diameter), float(0.5 * params_.b.diameter)};
+    p.inverseColourMax = float(1.0 / view.colourMax);
+    p.count = g.count;
+    view.gpu = p;
+    return view;
 }
 
 const GpuCellGrid& MdModelGL::cellGrid() const {
@@ -201,7 +223,8 @@ void MdModelGL::pullState() const {
 
 void MdModelGL::drift(double kickBefore, double h, double kickAfter) {
     MdGpu& g = *gpu_;
-    ComputeProgram& p = g.drift;
+    const bool small = g.grid.cells() + 1 <= kSmallSortCells && g.count <= kSmallSortMaxDisks;
+    ComputeProgram& p = small ? g.driftSmall : g.drift;
     const md::Boundaries b = boundaries(h);
     p.use();
     p.set("box", float(b.left), float(b.right), float(b.bottom), float(b.top));
@@ -242,6 +265,16 @@ void MdModelGL::drift(double kickBefore, double h, double kickAfter) {
         g.impulseSums.bind(11);
     };
     bindAll();
+    if (small) { // count, scan and scatter in one dispatch
+        p.dispatch(kSmallSortThreads, kSmallSortThreads);
+        storageBarrier();
+        g.mark("drift + sort (one group)");
+        g.current = 1 - g.current;
+        g.pendingKick = 0.0;
+        ++g.dispatches;
+        ++driftIndex_;
+        return;
+    }
     p.set("scatterPass", 0);
     p.dispatch(g.count, kDriftLocal);
     storageBarrier();

@@ -25,6 +25,7 @@ public:
     MdObservables observe() override;
     double totalEnergy() override;
     std::vector<NamedHistogram> histograms() const override;
+    SceneView sceneViewSharingGpu() const override;
 
     // Whether the current settings run on the GPU (rk4 and the all-pairs comparison run on the CPU).
     bool stepsOnGpu() const;

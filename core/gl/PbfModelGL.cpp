@@ -68,6 +68,22 @@ void PbfModelGL::finishPendingWork() const {
     glFinish();
 }
 
+SceneView PbfModelGL::sceneViewSharingGpu() const {
+    const PbfGpu& g = *gpu_;
+    if (!g.context->sharesWithViewports() || !g.gpuCurrent || g.cpuCurrent) return sceneView();
+    g.context->makeCurrent();
+    glFinish(); // another context reads these buffers next: the steps must be complete
+    SceneView view = sceneFrame();
+    GpuParticles p;
+    p.positions = g.x[g.current].id();
+    p.velocities = g.v[g.current].id();
+    p.radius = {float(params_.particleRadius), float(params_.particleRadius)};
+    p.inverseColourMax = float(1.0 / params_.colourSpeedMax);
+    p.count = g.count;
+    view.gpu = p;
+    return view;
+}
+
 void PbfModelGL::stateEdited() {
     if (gpu_) gpu_->gpuCurrent = false;
 }

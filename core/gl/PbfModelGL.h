@@ -21,6 +21,7 @@ public:
     void step() override;
     std::string backend() const override { return "gl"; }
     void finishPendingWork() const override; // glFinish in the model's context
+    SceneView sceneViewSharingGpu() const override;
     const ContextInfo& contextInfo() const;
     int dispatchesLastStep() const;
 

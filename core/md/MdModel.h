@@ -123,6 +123,7 @@ protected:
     // A speed histogram with its theory curve and summary line, from counts made elsewhere.
     NamedHistogram describeSpeedHistogram(int species, double kT, double ks, Histogram counts) const;
     double histogramRange(double kT, double mass) const; // the plotted speed range [L/T]
+    SceneView sceneFrame() const;                        // the scene without its particles
 
     // Integrators (MdIntegrators.cpp): one step each, all ending with forces at the new positions.
     void stepVelocityVerlet(double h);

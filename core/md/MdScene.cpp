@@ -15,17 +15,7 @@ constexpr double kColourScaleOverRms = 2.8;
 
 SceneView MdModel::sceneView() const {
     pullState();
-    SceneView view;
-    view.left = params_.left();
-    view.right = 0.5 * params_.boxWidth; // the whole box, also when the piston closes part of it
-    view.bottom = params_.bottom();
-    view.top = params_.top();
-    const double initialRms = params_.initVelocity == "maxwell-boltzmann"
-                                  ? std::sqrt(2.0 * params_.initKT / params_.a.mass)
-                                  : params_.initSpeed;
-    view.colourMax = kColourScaleOverRms * (initialRms > 0 ? initialRms : 1.0);
-    view.colours = ColourMap::Thermal;
-    view.colourLabel = "speed";
+    SceneView view = sceneFrame();
     const std::size_t n = state_.size();
     view.x.resize(n);
     view.y.resize(n);
@@ -40,6 +30,21 @@ SceneView MdModel::sceneView() const {
         view.radius[i] = radius[state_.species[i]];
         view.value[i] = static_cast<float>(std::hypot(state_.vx[i], state_.vy[i]) * inverseMax);
     }
+    return view;
+}
+
+SceneView MdModel::sceneFrame() const {
+    SceneView view;
+    view.left = params_.left();
+    view.right = 0.5 * params_.boxWidth; // the whole box, also when the piston closes part of it
+    view.bottom = params_.bottom();
+    view.top = params_.top();
+    const double initialRms = params_.initVelocity == "maxwell-boltzmann"
+                                  ? std::sqrt(2.0 * params_.initKT / params_.a.mass)
+                                  : params_.initSpeed;
+    view.colourMax = kColourScaleOverRms * (initialRms > 0 ? initialRms : 1.0);
+    view.colours = ColourMap::Thermal;
+    view.colourLabel = "speed";
     view.obstacles = obstacles_;
     if (params_.pistonEnabled) view.pistonX = params_.pistonX;
     return view;

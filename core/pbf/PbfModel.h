@@ -81,6 +81,7 @@ protected:
     // up to date here before the CPU code reads them, and learns through stateEdited() of CPU changes.
     virtual void pullState() const {}
     virtual void stateEdited() {}
+    SceneView sceneFrame() const; // the scene without its particles
 
     // Algorithm 1, line by line.
     void applyExternalForcesAndPredict();

@@ -18,16 +18,7 @@ constexpr double kMinimumSeparation = 0.5;
 
 SceneView PbfModel::sceneView() const {
     pullState();
-    SceneView view;
-    view.left = 0;
-    view.bottom = 0;
-    view.right = params_.worldWidth;
-    view.top = params_.worldHeight;
-    view.background = {46 / 255.0f, 139 / 255.0f, 87 / 255.0f}; // the seed's #2E8B57
-    view.colours = ColourMap::BlueRed;
-    view.colourLabel = "speed";
-    view.colourMax = params_.colourSpeedMax;
-    if (state_.size() == 0) view.hint = "Click and drag to pour fluid";
+    SceneView view = sceneFrame();
     const std::size_t n = state_.size();
     view.x.resize(n);
     view.y.resize(n);
@@ -39,6 +30,21 @@ SceneView PbfModel::sceneView() const {
         view.y[i] = static_cast<float>(state_.y[i]);
         view.value[i] = static_cast<float>(std::hypot(state_.vx[i], state_.vy[i]) * inverseMax);
     }
+    return view;
+}
+
+// state_.size() is current also while a GPU backend holds the particles: only the CPU changes the count.
+SceneView PbfModel::sceneFrame() const {
+    SceneView view;
+    view.left = 0;
+    view.bottom = 0;
+    view.right = params_.worldWidth;
+    view.top = params_.worldHeight;
+    view.background = {46 / 255.0f, 139 / 255.0f, 87 / 255.0f}; // the seed's #2E8B57
+    view.colours = ColourMap::BlueRed;
+    view.colourLabel = "speed";
+    view.colourMax = params_.colourSpeedMax;
+    if (state_.size() == 0) view.hint = "Click and drag to pour fluid";
     view.obstacles = obstacles_;
     return view;
 }

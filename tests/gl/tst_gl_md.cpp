@@ -4,6 +4,7 @@
 #include "gl/Backends.h"
 #include "gl/GlProgram.h"
 #include "gl/GpuCellGrid.h"
+#include "gl/MachineBenchmark.h"
 #include "gl/MdModelGL.h"
 
 #include <QtTest>
@@ -26,10 +27,12 @@ Preset gasPreset(ParamValues params, std::vector<Obstacle> obstacles = {}) {
     return p;
 }
 
-// 1600 stiff disks placed at random (overlaps allowed) at speed 1: many contacts from the start.
-Preset denseGas(const std::string& integrator) {
-    return gasPreset({{"count_a", 1600.0},
-                      {"diameter_a", 0.04},
+// 1600 stiff disks placed at random (overlaps allowed) at speed 1: many contacts from the start. With
+// more disks (smaller, at the same area fraction) the grid passes 2047 cells, and the sort takes the
+// three-dispatch path instead of the one-work-group one.
+Preset denseGas(const std::string& integrator, double disks = 1600) {
+    return gasPreset({{"count_a", disks},
+                      {"diameter_a", 0.04 * std::sqrt(1600 / disks)},
                       {"stiffness", 1e4},
                       {"init_placement", std::string("random")},
                       {"init_velocity", std::string("fixed-speed")},
@@ -86,22 +89,31 @@ private slots:
                  nvidia.c_str());
     }
 
+    void countingSortIsAPermutationInCellOrder_data() {
+        QTest::addColumn<int>("disks");
+        QTest::newRow("one work group sorts (784 cells)") << 0;
+        QTest::newRow("count, two-level scan, scatter (~10k cells)") << 20000;
+    }
+
     // After a step the GPU holds every disk once, in the order of its cell.
     void countingSortIsAPermutationInCellOrder() {
+        QFETCH(int, disks);
         MdModelGL model(context_);
-        model.reset(denseGas("velocity-verlet"));
+        model.reset(disks == 0 ? denseGas("velocity-verlet") : scaledGasPreset(std::size_t(disks)));
         model.step();
+        QCOMPARE(model.dispatchesLastStep(), disks == 0 ? 2 : 6);
         const MdState& s = model.state();
-        QCOMPARE(s.size(), std::size_t(1600));
+        QCOMPARE(s.size(), std::size_t(disks == 0 ? 1600 : disks));
         std::vector<std::uint32_t> ids(s.id.begin(), s.id.end());
         std::sort(ids.begin(), ids.end());
         for (std::uint32_t i = 0; i < ids.size(); ++i) QCOMPARE(ids[i], i);
         const GpuCellGrid& grid = model.cellGrid();
-        QVERIFY(grid.side() >= 0.04);
+        QVERIFY(grid.side() >= model.parameters().maxDiameter());
+        const double left = model.parameters().left(), bottom = model.parameters().bottom();
         long long previous = -1;
         for (std::size_t i = 0; i < s.size(); ++i) {
-            const int cx = std::clamp(int((s.x[i] + 1.0) / grid.side()), 0, grid.nx() - 1);
-            const int cy = std::clamp(int((s.y[i] + 1.0) / grid.side()), 0, grid.ny() - 1);
+            const int cx = std::clamp(int((s.x[i] - left) / grid.side()), 0, grid.nx() - 1);
+            const int cy = std::clamp(int((s.y[i] - bottom) / grid.side()), 0, grid.ny() - 1);
             const long long cell = static_cast<long long>(cy) * grid.nx() + cx;
             QVERIFY2(cell >= previous, "disks are in cell order");
             previous = cell;
@@ -110,8 +122,10 @@ private slots:
 
     void oneStepMatchesCpu_data() {
         QTest::addColumn<QString>("integrator");
+        QTest::addColumn<double>("disks");
         for (const char* name : {"velocity-verlet", "symplectic-euler", "explicit-euler", "forest-ruth"})
-            QTest::newRow(name) << QString(name);
+            QTest::newRow(name) << QString(name) << 1600.0;
+        QTest::newRow("velocity-verlet, 3-dispatch sort") << QString("velocity-verlet") << 9000.0;
     }
 
     // float32 tolerances: positions of magnitude ≤ 1 carry ≤ 6e-8 rounding each, so a pair distance is
@@ -120,7 +134,8 @@ private slots:
     // Positions after three steps of 1e-4 agree to a few ulps, velocities to 3 dt·|Δa| plus rounding.
     void oneStepMatchesCpu() {
         QFETCH(QString, integrator);
-        const Preset preset = denseGas(integrator.toStdString());
+        QFETCH(double, disks);
+        const Preset preset = denseGas(integrator.toStdString(), disks);
         MdModel cpu;
         cpu.reset(preset);
         MdModelGL gpu(context_);

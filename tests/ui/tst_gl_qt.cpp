@@ -1,5 +1,7 @@
 // The GPU models inside Qt: a Qt OpenGL 4.3 context under X (the in-app path, next to the headless EGL
 // one of tests/gl), the controller's backend choice, and the "Benchmark this machine" dialog.
+#include "ExperimentDocument.h"
+#include "MainWindow.h"
 #include "SimulationController.h"
 #include "gl/MachineBenchmark.h"
 #include "gl/MdModelGL.h"
@@ -7,6 +9,7 @@
 #include "gpu/BenchmarkDialog.h"
 #include "gpu/QtGlContext.h"
 #include "plots/PlotExport.h"
+#include "viewport/GLViewport.h"
 
 #include <QtTest>
 #include <qcustomplot.h>
@@ -59,6 +62,40 @@ private slots:
         QCOMPARE(controller.model()->particleCount(), std::size_t(1024));
         QCOMPARE(notices.count(), 1);
         QVERIFY(notices.front().front().toString().contains("CPU"));
+    }
+
+    // With the GPU backend the viewport draws the particles from the model's buffers; the picture is the
+    // one the CPU copy gives (the same disks in the same colours; float positions move some by a pixel).
+    void viewportDrawsStraightFromTheGpuBuffers() {
+        // Lit pixels of the viewport after a few frames; −1 when the window or its viewport is missing.
+        auto viewportImage = [](gl::Backend backend, long long* gpuFrames) -> long long {
+            ui::MainWindow window;
+            window.controller()->setBackend(backend);
+            window.document()->open("gas-classroom", true);
+            window.resize(1280, 800);
+            window.show();
+            if (!QTest::qWaitForWindowExposed(&window)) return -1;
+            for (int f = 0; f < 3; ++f) window.controller()->advanceFrame();
+            auto* viewport = window.findChild<ui::GLViewport*>();
+            if (!viewport) return -1;
+            viewport->repaint();
+            *gpuFrames = viewport->framesFromGpuBuffers();
+            QImage image = viewport->grabFramebuffer();
+            // Particle pixels: anything brighter than the dark background.
+            long long lit = 0;
+            for (int y = 0; y < image.height(); ++y)
+                for (int x = 0; x < image.width(); ++x) lit += qGray(image.pixel(x, y)) > 60 ? 1 : 0;
+            return lit;
+        };
+        long long gpuFrames = 0, cpuFrames = 0;
+        const long long litGpu = viewportImage(gl::Backend::Gl, &gpuFrames);
+        const long long litCpu = viewportImage(gl::Backend::Cpu, &cpuFrames);
+        qInfo("lit pixels: %lld from GPU buffers, %lld from the CPU copy; GPU frames %lld", litGpu, litCpu,
+              gpuFrames);
+        QVERIFY2(gpuFrames > 0, "the GL viewport drew from the model's buffers");
+        QCOMPARE(cpuFrames, 0LL);
+        QVERIFY(litGpu > 0 && litCpu > 10000);
+        QVERIFY(std::abs(double(litGpu) / double(litCpu) - 1) < 0.05);
     }
 
     void benchmarkDialogPlotsEveryBackend() {

@@ -29,6 +29,8 @@ std::shared_ptr<QtGlContext> QtGlContext::create() {
     if (got.version() < qMakePair(4, 3) || got.profile() != QSurfaceFormat::CoreProfile)
         throw gl::GlUnavailable("Qt gave OpenGL " + std::to_string(got.majorVersion()) + "." +
                                 std::to_string(got.minorVersion()) + " without the 4.3 core profile");
+    // Sharing needs Qt::AA_ShareOpenGLContexts and a driver that shares between these formats.
+    c->shared_ = QOpenGLContext::globalShareContext() && c->context_->shareContext();
     c->surface_ = std::make_unique<QOffscreenSurface>();
     c->surface_->setFormat(got);
     c->surface_->create();

@@ -18,12 +18,14 @@ public:
 
     void makeCurrent() override;
     const gl::ContextInfo& info() const override { return info_; }
+    bool sharesWithViewports() const override { return shared_; }
 
 private:
     QtGlContext() = default;
     std::unique_ptr<QOpenGLContext> context_;
     std::unique_ptr<QOffscreenSurface> surface_;
     gl::ContextInfo info_;
+    bool shared_ = false;
 };
 
 // The context the app's GPU models use: the Qt one where the platform draws with OpenGL, else none

@@ -32,6 +32,37 @@ void main() {
 }
 )";
 
+// The same discs, read straight from a GPU model's storage buffers (std430, see SceneView::gpu): the
+// instance index is the particle index, the colour value is the speed. Needs GLSL 4.30.
+const char* kGpuVertexShader = R"(#version 430 core
+layout(std430, binding = 0) readonly buffer Positions { vec2 positions[]; };
+layout(std430, binding = 1) readonly buffer Velocities { vec2 velocities[]; };
+layout(std430, binding = 2) readonly buffer Accelerations { vec2 accelerations[]; };
+layout(std430, binding = 3) readonly buffer Tags { uint tags[]; };
+uniform bool hasAccelerations, hasTags;
+uniform float pendingKick, inverseColourMax;
+uniform vec2 speciesRadius;
+uniform vec2 worldToNdcScale;
+uniform vec2 worldToNdcOffset;
+uniform vec2 pixelToNdc;
+uniform float pixelsPerWorld;
+out vec2 offsetPx;
+out float radiusPx;
+out float value;
+const vec2 corners[4] = vec2[](vec2(-1.0, -1.0), vec2(1.0, -1.0), vec2(-1.0, 1.0), vec2(1.0, 1.0));
+void main() {
+    const int i = gl_InstanceID;
+    vec2 v = velocities[i];
+    if (hasAccelerations) v += pendingKick * accelerations[i];
+    const float radius = speciesRadius[hasTags ? int(tags[i] & 1u) : 0];
+    radiusPx = max(radius * pixelsPerWorld, 1.0);
+    vec2 corner = corners[gl_VertexID] * (radiusPx + 1.0);
+    offsetPx = corner;
+    value = length(v) * inverseColourMax;
+    gl_Position = vec4(positions[i] * worldToNdcScale + worldToNdcOffset + corner * pixelToNdc, 0.0, 1.0);
+}
+)";
+
 const char* kFragmentShader = R"(#version 330 core
 in vec2 offsetPx;
 in float radiusPx;
@@ -81,7 +112,9 @@ void GLViewport::releaseGL() {
     instances_.destroy();
     vao_.destroy();
     program_.removeAllShaders();
-    ready_ = false;
+    gpuProgram_.removeAllShaders();
+    ready_ = gpuReady_ = false;
+    core_->setDrawsGpuBuffers(false);
 }
 
 void GLViewport::initializeGL() {
@@ -98,11 +131,64 @@ void GLViewport::initializeGL() {
     instances_.create();
     instances_.setUsagePattern(QOpenGLBuffer::StreamDraw);
     ready_ = true;
+    // Drawing from a GPU model's buffers needs GLSL 4.30 and a context in the models' share group.
+    const bool canShare = context()->format().version() >= qMakePair(4, 3) && context()->shareContext() &&
+                          QOpenGLContext::globalShareContext();
+    gpuReady_ = canShare && gpuProgram_.addShaderFromSourceCode(QOpenGLShader::Vertex, kGpuVertexShader) &&
+                gpuProgram_.addShaderFromSourceCode(QOpenGLShader::Fragment, kFragmentShader) &&
+                gpuProgram_.link();
+    core_->setDrawsGpuBuffers(gpuReady_);
+}
+
+void GLViewport::setCommonUniforms(QOpenGLShaderProgram& program, const SceneView& scene) {
+    const ViewTransform& t = core_->transform();
+    const auto w = static_cast<float>(t.size().width()), h = static_cast<float>(t.size().height());
+    const auto s = static_cast<float>(t.scale());
+    program.setUniformValue("worldToNdcScale", 2 * s / w, 2 * s / h);
+    program.setUniformValue("worldToNdcOffset", static_cast<float>(-2 * s * t.centreX() / w),
+                            static_cast<float>(-2 * s * t.centreY() / h));
+    program.setUniformValue("pixelToNdc", 2 / w, 2 / h);
+    program.setUniformValue("pixelsPerWorld", s);
+    const QVector<QColor>& stops = paletteStops(scene.colours);
+    QVector<QVector3D> rgb;
+    for (const QColor& c : stops) rgb << QVector3D(c.redF(), c.greenF(), c.blueF());
+    program.setUniformValueArray("stops", rgb.constData(), static_cast<int>(rgb.size()));
+    program.setUniformValue("stopCount", static_cast<int>(rgb.size()));
+    program.setUniformValue("categorical", isCategorical(scene.colours));
+}
+
+void GLViewport::drawGpuParticles(const GpuParticles& particles) {
+    if (particles.count == 0) return;
+    gpuProgram_.bind();
+    setCommonUniforms(gpuProgram_, core_->scene());
+    gpuProgram_.setUniformValue("hasAccelerations", particles.accelerations != 0);
+    gpuProgram_.setUniformValue("hasTags", particles.tags != 0);
+    gpuProgram_.setUniformValue("pendingKick", particles.pendingKick);
+    gpuProgram_.setUniformValue("inverseColourMax", particles.inverseColourMax);
+    gpuProgram_.setUniformValue("speciesRadius", particles.radius[0], particles.radius[1]);
+    // Unused bindings get the positions: always a valid buffer, never read.
+    const GLuint buffers[4] = {particles.positions, particles.velocities,
+                               particles.accelerations ? particles.accelerations : particles.positions,
+                               particles.tags ? particles.tags : particles.positions};
+    for (GLuint b = 0; b < 4; ++b) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, b, buffers[b]);
+    vao_.bind();
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(particles.count));
+    glDisable(GL_BLEND);
+    vao_.release();
+    gpuProgram_.release();
+    ++gpuFrames_;
 }
 
 void GLViewport::drawParticles() {
     const SceneView& scene = core_->scene();
-    if (!ready_ || scene.size() == 0) return;
+    if (!ready_) return;
+    if (scene.gpu) {
+        if (gpuReady_) drawGpuParticles(*scene.gpu);
+        return;
+    }
+    if (scene.size() == 0) return;
     packed_.resize(4 * scene.size());
     for (std::size_t i = 0; i < scene.size(); ++i) {
         packed_[4 * i] = scene.x[i];
@@ -110,22 +196,9 @@ void GLViewport::drawParticles() {
         packed_[4 * i + 2] = scene.radius[i];
         packed_[4 * i + 3] = scene.value[i];
     }
-    const ViewTransform& t = core_->transform();
-    const auto w = static_cast<float>(t.size().width()), h = static_cast<float>(t.size().height());
-    const auto s = static_cast<float>(t.scale());
     program_.bind();
-    program_.setUniformValue("worldToNdcScale", 2 * s / w, 2 * s / h);
-    program_.setUniformValue("worldToNdcOffset", static_cast<float>(-2 * s * t.centreX() / w),
-                             static_cast<float>(-2 * s * t.centreY() / h));
-    program_.setUniformValue("pixelToNdc", 2 / w, 2 / h);
-    program_.setUniformValue("pixelsPerWorld", s);
+    setCommonUniforms(program_, scene);
     program_.setUniformValue("pointRadiusPx", kPointRadiusPx);
-    const QVector<QColor>& stops = paletteStops(scene.colours);
-    QVector<QVector3D> rgb;
-    for (const QColor& c : stops) rgb << QVector3D(c.redF(), c.greenF(), c.blueF());
-    program_.setUniformValueArray("stops", rgb.constData(), static_cast<int>(rgb.size()));
-    program_.setUniformValue("stopCount", static_cast<int>(rgb.size()));
-    program_.setUniformValue("categorical", isCategorical(scene.colours));
 
     vao_.bind();
     instances_.bind();

@@ -8,6 +8,8 @@
 #include <QOpenGLShaderProgram>
 #include <QOpenGLVertexArrayObject>
 #include <QOpenGLWidget>
+
+#include "common/SceneView.h"
 #include <vector>
 
 namespace pl::ui {
@@ -21,6 +23,8 @@ public:
     explicit GLViewport(SimulationController* controller, QWidget* parent = nullptr);
     ~GLViewport() override;
     ViewportCore* core() const { return core_; }
+    // Frames whose particles came straight from a GPU model's buffers (no copy through the CPU).
+    long long framesFromGpuBuffers() const { return gpuFrames_; }
     QSize sizeHint() const override { return {800, 800}; }
 
 protected:
@@ -31,13 +35,18 @@ private:
     void contextGoingAway(); // the dock was floated or the widget re-parented: a new context follows
     void releaseGL();
     void drawParticles();
+    void drawGpuParticles(const GpuParticles& particles);
+    void setCommonUniforms(QOpenGLShaderProgram& program, const SceneView& scene);
 
     ViewportCore* core_;
     QOpenGLShaderProgram program_;
+    QOpenGLShaderProgram gpuProgram_; // particles from SceneView::gpu
     QOpenGLVertexArrayObject vao_;
     QOpenGLBuffer instances_{QOpenGLBuffer::VertexBuffer};
     std::vector<float> packed_; // x, y, radius, value per particle
     bool ready_ = false;
+    bool gpuReady_ = false;
+    long long gpuFrames_ = 0;
 };
 
 } // namespace pl::ui

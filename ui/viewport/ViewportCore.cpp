@@ -46,7 +46,7 @@ ViewportCore::ViewportCore(SimulationController* controller, QWidget* widget)
 
 void ViewportCore::beginPaint() {
     const Model* model = controller_->model();
-    scene_ = model ? model->sceneView() : SceneView{};
+    scene_ = !model ? SceneView{} : drawsGpuBuffers_ ? model->sceneViewSharingGpu() : model->sceneView();
     transform_.fit(scene_, widget_->size(), kMarginPx);
 }
 

@@ -32,6 +32,9 @@ public:
     // Counts a finished frame for the frame-rate meter.
     void endPaint();
     const SceneView& scene() const { return scene_; }
+    // Set by a viewport that can draw particles straight from a GPU model's buffers (SceneView::gpu).
+    void setDrawsGpuBuffers(bool on) { drawsGpuBuffers_ = on; }
+    bool drawsGpuBuffers() const { return drawsGpuBuffers_; }
     const ViewTransform& transform() const { return transform_; }
     void paintParticles(QPainter& painter) const; // the CPU path; the GL viewport draws them in a shader
     void paintOverlay(QPainter& painter) const;
@@ -77,6 +80,7 @@ private:
     QElapsedTimer frameClock_;
     int framesCounted_ = 0;
     double framesPerSecond_ = 0.0;
+    bool drawsGpuBuffers_ = false;
 };
 
 } // namespace pl::ui
