@@ -217,6 +217,9 @@ void GLViewport::drawParticles() {
 
 void GLViewport::paintGL() {
     core_->beginPaint();
+    // A GPU model handing over its buffers made its own context current (to finish its steps): take
+    // ours back, with this widget's framebuffer bound.
+    makeCurrent();
     QPainter painter(this);
     painter.beginNativePainting(); // Qt's documented way to mix raw GL with QPainter on this widget
     const auto& bg = core_->scene().background;
