@@ -14,9 +14,11 @@ namespace {
 
 constexpr unsigned kStreamLocal = 256, kPairLocal = 128;
 constexpr std::int64_t kHealthInterval = 64;
-// Cells of side h: a dense fluid puts about (h/δ)² = 4 particles in each, and the 3×3 stencil then
-// holds ~36 candidates for ~13 neighbours within h (wider cells, as for the sparse gas, tripled that).
-constexpr double kParticlesPerCell = 0.5;
+// Cells of side h/2 searched 2 cells out: a dense fluid puts about one particle in each, and the 5×5
+// stencil holds ~25 candidates for ~13 neighbours within h (3×3 cells of side h: ~36; cells sized for
+// two particles each, as for the sparse gas: ~110).
+constexpr int kCellReach = 2;
+constexpr double kParticlesPerCell = 0.1;
 
 struct GpuObstacle { // std430 layout of pbf_boundaries.glsl's GpuObstacle
     float centre[2], halfSize[2], velocity[2], radius;
@@ -104,7 +106,8 @@ void PbfModelGL::upload() {
     for (Buffer* b : {&g.lambdaBuffer, &g.omega}) b->reserve(n * 4);
     // Cells at least as wide as the kernel support (the CPU's search radius only adds pairs beyond h,
     // where every kernel is zero).
-    g.grid.configure(0.0, 0.0, params_.worldWidth, params_.worldHeight, params_.h, n, kParticlesPerCell);
+    g.grid.configure(0.0, 0.0, params_.worldWidth, params_.worldHeight, params_.h / kCellReach, n,
+                     kParticlesPerCell);
     g.gpuCurrent = true;
     g.cpuCurrent = true;
 }
@@ -160,6 +163,7 @@ void PbfModelGL::setCommonUniforms(ComputeProgram& p) const {
     p.set("jitterAmount", float(jitter.amount));
     p.set("inverseRest", float(1.0 / restDensity_));
     g.grid.setUniforms(p);
+    p.set("cellReach", kCellReach);
 }
 
 void PbfModelGL::step() {

@@ -23,7 +23,7 @@ void main() {
     const float li = lambda[i];
     const ivec2 c = cellCoord(pi);
     vec2 delta = vec2(0.0);
-    for (int dy = -1; dy <= 1; ++dy) {
+    for (int dy = -cellReach; dy <= cellReach; ++dy) {
         const uvec2 range = cellRowRange(c, dy);
         for (uint j = range.x; j < range.y; ++j) {
             const vec2 d = pi - p[j];

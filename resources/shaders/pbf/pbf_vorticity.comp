@@ -23,7 +23,7 @@ void main() {
     const ivec2 c = cellCoord(pi);
     if (pass_ == 0) {
         float wi = 0.0;
-        for (int dy = -1; dy <= 1; ++dy) {
+        for (int dy = -cellReach; dy <= cellReach; ++dy) {
             const uvec2 range = cellRowRange(c, dy);
             for (uint j = range.x; j < range.y; ++j) {
                 const vec2 d = pi - p[j];
@@ -39,7 +39,7 @@ void main() {
     }
     vec2 eta = vec2(0.0);
     const float oi = abs(omega[i]);
-    for (int dy = -1; dy <= 1; ++dy) {
+    for (int dy = -cellReach; dy <= cellReach; ++dy) {
         const uvec2 range = cellRowRange(c, dy);
         for (uint j = range.x; j < range.y; ++j) {
             const vec2 d = pi - p[j];
