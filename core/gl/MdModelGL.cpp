@@ -2,6 +2,7 @@
 #include "MdModelGL.h"
 
 #include "GpuCellGrid.h"
+#include "GpuObstacles.h"
 #include "common/Statistics.h"
 
 #include <algorithm>
@@ -22,11 +23,6 @@ constexpr double kFineSigmas = 10.0;     // fine bins span 0 … 10 √(kT/m)
 constexpr double kParticlesPerCell = 2.0;
 constexpr std::int64_t kHealthInterval = 64; // as the CPU model's energy check
 const double kForestRuthTheta = 1.0 / (2.0 - std::cbrt(2.0));
-
-struct GpuObstacle { // std430 layout of md_boundaries.glsl's GpuObstacle
-    float centre[2], halfSize[2], velocity[2], radius;
-    std::uint32_t shape;
-};
 
 } // namespace
 
@@ -242,17 +238,6 @@ void MdModelGL::drift(double kickBefore, double h, double kickAfter) {
     p.set("kickBefore", float(g.pendingKick + kickBefore));
     p.set("kickAfter", float(kickAfter));
     g.grid.setUniforms(p);
-    if (!obstacles_.empty()) {
-        std::vector<GpuObstacle> list;
-        for (const auto& o : obstacles_)
-            list.push_back({{float(o.x), float(o.y)},
-                            {float(o.halfWidth), float(o.halfHeight)},
-                            {float(o.vx), float(o.vy)},
-                            float(o.radius),
-                            o.shape == Obstacle::Shape::Disc ? 0u : 1u});
-        g.obstacles.uploadVector(list);
-        g.obstacles.bind(15);
-    }
     auto bindAll = [&] {
         g.bindState();
         g.pos[1 - g.current].bind(4);
@@ -327,6 +312,7 @@ void MdModelGL::step() {
         return;
     }
     gpu_->context->makeCurrent();
+    uploadObstacles(gpu_->obstacles, obstacles_); // they move between steps, never within one
     if (!gpu_->gpuCurrent) upload();
     gpu_->dispatches = 0;
     gpu_->mark("start");

@@ -3,6 +3,7 @@
 
 #include "GlProgram.h"
 #include "GpuCellGrid.h"
+#include "GpuObstacles.h"
 
 #include <algorithm>
 #include <cmath>
@@ -19,11 +20,6 @@ constexpr std::int64_t kHealthInterval = 64;
 // two particles each, as for the sparse gas: ~110).
 constexpr int kCellReach = 2;
 constexpr double kParticlesPerCell = 0.1;
-
-struct GpuObstacle { // std430 layout of pbf_boundaries.glsl's GpuObstacle
-    float centre[2], halfSize[2], velocity[2], radius;
-    std::uint32_t shape;
-};
 
 } // namespace
 
@@ -176,17 +172,7 @@ void PbfModelGL::step() {
     }
     g.dispatches = 0;
     const std::size_t n = g.count;
-    std::vector<GpuObstacle> list;
-    for (const auto& o : obstacles_)
-        list.push_back({{float(o.x), float(o.y)},
-                        {float(o.halfWidth), float(o.halfHeight)},
-                        {float(o.vx), float(o.vy)},
-                        float(o.radius),
-                        o.shape == Obstacle::Shape::Disc ? 0u : 1u});
-    if (!list.empty()) {
-        g.obstacles.uploadVector(list);
-        g.obstacles.bind(15);
-    }
+    uploadObstacles(g.obstacles, obstacles_);
     const double gx = params_.gravity ? params_.gravityX : 0.0, gy = params_.gravity ? params_.gravityY : 0.0;
 
     // Lines 1–7: predict, then sort by the cell of the prediction (neighbours come from the cells).

@@ -2,15 +2,7 @@
 // core/md/MdBoundaries.cpp (pathEntry, reflectOffObstacle, collideObstacle, reflectOffWalls).
 #include "common/philox.glsl"
 #include "md/md_kernels.glsl"
-
-struct GpuObstacle {
-    vec2 centre;     // [L]
-    vec2 halfSize;   // box half extents [L]
-    vec2 velocity;   // imparted on reflection [L/T]
-    float radius;    // disc radius [L]
-    uint shape;      // 0 disc, 1 box
-};
-layout(std430, binding = 15) readonly buffer Obstacles { GpuObstacle obstacles[]; };
+#include "common/obstacles.glsl"
 
 uniform vec4 box;              // left, right (the piston when enabled), bottom, top [L]
 uniform float pistonVelocity;  // [L/T]
@@ -20,7 +12,6 @@ uniform float wallKT;
 uniform vec2 speciesMass;      // [M]
 uniform vec2 speciesRadius;    // [L]
 uniform uvec2 seedWords, drawWords; // 64-bit seed and draw index as (low, high)
-uniform uint obstacleCount;
 
 const uint kRngThermalWall = 3u;
 

@@ -1,19 +1,10 @@
 // Collision response of the fluid: the GLSL twin of core/pbf/PbfBoundaries.h (projectOutOfObstacle,
 // WallJitter, clampToBox, confine, obstacleVelocity).
 #include "common/philox.glsl"
-
-struct GpuObstacle {
-    vec2 centre;
-    vec2 halfSize;
-    vec2 velocity;
-    float radius;
-    uint shape; // 0 disc, 1 box
-};
-layout(std430, binding = 15) readonly buffer Obstacles { GpuObstacle obstacles[]; };
+#include "common/obstacles.glsl"
 
 uniform vec4 confinement; // left, bottom, right, top: where centres may be [L]
 uniform float margin;     // particle radius [L]
-uniform uint obstacleCount;
 uniform uvec2 seedWords, stepWords; // wall jitter key: seed and step as (low, high)
 uniform float jitterAmount;          // [L]
 
