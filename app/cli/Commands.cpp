@@ -5,6 +5,7 @@
 #include "common/AtomicFile.h"
 #include "common/TimeSeries.h"
 #include "gl/Backends.h"
+#include "md/TimeReversal.h"
 
 #include <algorithm>
 #include <chrono>
@@ -158,6 +159,27 @@ int runSimulation(const RunOptions& options) {
     if (auto failure = model->failure()) {
         std::cerr << "particlelab-cli: the model stopped: " << failure->message() << "\n";
         return kModelFailed;
+    }
+    return kOk;
+}
+
+int loschmidtEcho(const EchoOptions& options) {
+    md::EchoSetup setup;
+    setup.disks = options.disks;
+    std::ostringstream csv;
+    csv.precision(17);
+    csv << "steps,rms_double,rms_float,rms_integer\n";
+    for (const auto& p : md::loschmidtEcho(setup, options.steps))
+        csv << p.steps << ',' << p.rmsDouble << ',' << p.rmsFloat << ',' << p.rmsInteger << '\n';
+    if (options.out.empty()) {
+        std::cout << csv.str();
+        return kOk;
+    }
+    try {
+        writeFileAtomically(options.out, csv.str());
+    } catch (const std::exception& e) {
+        std::cerr << "particlelab-cli: " << e.what() << "\n";
+        return kCannotWrite;
     }
     return kOk;
 }

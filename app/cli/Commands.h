@@ -37,8 +37,16 @@ struct BenchOptions {
     std::string backend = "auto";
 };
 
+struct EchoOptions {
+    int disks = 64;
+    std::vector<long long> steps{10, 30, 100, 300, 1000, 3000, 10000};
+    std::string out; // CSV; standard output when empty
+};
+
 int listPresets();
 int runSimulation(const RunOptions& options);
 int benchmark(const BenchOptions& options);
+// The Loschmidt echo of a periodic gas in double, float and bit-reversible integer arithmetic.
+int loschmidtEcho(const EchoOptions& options);
 
 } // namespace pl::cli

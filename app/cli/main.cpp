@@ -46,7 +46,17 @@ int main(int argc, char** argv) {
     benchCmd->add_option("--repeats", bench.repeats, "Timed repeats; the median is reported")
         ->check(CLI::PositiveNumber);
 
+    EchoOptions echo;
+    auto* echoCmd = app.add_subcommand(
+        "echo", "Time reversal measured: run n steps forward and n back, print the rms return error (CSV)");
+    echoCmd->add_option("--disks", echo.disks, "Disks in the periodic box (square lattice)")
+        ->check(CLI::Range(2, 4096));
+    echoCmd->add_option("--steps", echo.steps, "Values of n (default 10 30 … 10000)")
+        ->check(CLI::PositiveNumber);
+    echoCmd->add_option("--out", echo.out, "CSV file (default: standard output)");
+
     CLI11_PARSE(app, argc, argv);
+    if (app.got_subcommand("echo")) return loschmidtEcho(echo);
     if (app.got_subcommand("list")) return listPresets();
     if (app.got_subcommand("run")) return runSimulation(run);
     return benchmark(bench);

@@ -168,6 +168,21 @@ private slots:
         QVERIFY(readLines(series).size() > 1); // what was measured before the failure is kept
     }
 
+    void echoWritesTheReturnErrors() {
+        QTemporaryDir dir;
+        const QString out = dir.filePath("echo.csv");
+        const auto r = cli({"echo", "--disks", "25", "--steps", "10", "2000", "--out", out});
+        QCOMPARE(r.exitCode, 0);
+        const QStringList lines = readLines(out);
+        QCOMPARE(lines.size(), 3);
+        QCOMPARE(lines[0], QString("steps,rms_double,rms_float,rms_integer"));
+        const QStringList short_ = lines[1].split(','), long_ = lines[2].split(',');
+        QCOMPARE(short_[0], QString("10"));
+        QCOMPARE(long_[3].toDouble(), 0.0);                  // bit-reversible
+        QVERIFY(long_[2].toDouble() > long_[1].toDouble());  // float returns worse than double
+        QVERIFY(long_[1].toDouble() > short_[1].toDouble()); // and both grow with n
+    }
+
     void benchPrintsOneJsonLine() {
         const auto r = cli({"bench", "gas-classroom", "--steps", "50", "--repeats", "3", "--threads", "1"});
         QCOMPARE(r.exitCode, 0);
