@@ -5,6 +5,7 @@
 #include "common/AtomicFile.h"
 #include "common/TimeSeries.h"
 #include "gl/Backends.h"
+#include "md/MethodSweep.h"
 #include "md/TimeReversal.h"
 
 #include <algorithm>
@@ -163,6 +164,40 @@ int runSimulation(const RunOptions& options) {
     return kOk;
 }
 
+// Writes text to path atomically, or to standard output when path is empty.
+int writeOrPrint(const std::string& path, const std::string& text) {
+    if (path.empty()) {
+        std::cout << text;
+        return kOk;
+    }
+    try {
+        writeFileAtomically(path, text);
+    } catch (const std::exception& e) {
+        std::cerr << "particlelab-cli: " << e.what() << "\n";
+        return kCannotWrite;
+    }
+    return kOk;
+}
+
+int integratorSweep(const SweepOptions& options) {
+    md::SweepResult result;
+    try {
+        result = md::sweepHarmonicPair(options.integrators, options.steps, options.stiffness);
+    } catch (const std::exception& e) {
+        std::cerr << "particlelab-cli: " << e.what() << "\n";
+        return kBadInput;
+    }
+    std::ostringstream csv;
+    csv.precision(17);
+    csv << "integrator,dt,trajectory_error,energy_error,forces_per_time,seconds_per_time\n";
+    for (const auto& p : result.points)
+        csv << p.integrator << ',' << p.dt << ',' << p.trajectoryError << ',' << p.energyError << ','
+            << p.forcesPerTime << ',' << p.secondsPerTime << '\n';
+    for (const auto& o : result.orders)
+        std::cerr << o.integrator << ": measured order " << o.measured << " (theory " << o.theory << ")\n";
+    return writeOrPrint(options.out, csv.str());
+}
+
 int loschmidtEcho(const EchoOptions& options) {
     md::EchoSetup setup;
     setup.disks = options.disks;
@@ -171,17 +206,7 @@ int loschmidtEcho(const EchoOptions& options) {
     csv << "steps,rms_double,rms_float,rms_integer\n";
     for (const auto& p : md::loschmidtEcho(setup, options.steps))
         csv << p.steps << ',' << p.rmsDouble << ',' << p.rmsFloat << ',' << p.rmsInteger << '\n';
-    if (options.out.empty()) {
-        std::cout << csv.str();
-        return kOk;
-    }
-    try {
-        writeFileAtomically(options.out, csv.str());
-    } catch (const std::exception& e) {
-        std::cerr << "particlelab-cli: " << e.what() << "\n";
-        return kCannotWrite;
-    }
-    return kOk;
+    return writeOrPrint(options.out, csv.str());
 }
 
 int benchmark(const BenchOptions& options) {

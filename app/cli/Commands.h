@@ -43,10 +43,20 @@ struct EchoOptions {
     std::string out; // CSV; standard output when empty
 };
 
+struct SweepOptions {
+    std::vector<std::string> integrators{"explicit-euler", "symplectic-euler", "velocity-verlet", "rk4",
+                                         "forest-ruth"};
+    std::vector<int> steps{16, 32, 64, 128, 256}; // steps over the horizon
+    double stiffness = 1000.0;
+    std::string out; // CSV; standard output when empty
+};
+
 int listPresets();
 int runSimulation(const RunOptions& options);
 int benchmark(const BenchOptions& options);
 // The Loschmidt echo of a periodic gas in double, float and bit-reversible integer arithmetic.
 int loschmidtEcho(const EchoOptions& options);
+// Accuracy against cost of the gas's integrators on the harmonic pair, with measured orders.
+int integratorSweep(const SweepOptions& options);
 
 } // namespace pl::cli

@@ -55,8 +55,19 @@ int main(int argc, char** argv) {
         ->check(CLI::PositiveNumber);
     echoCmd->add_option("--out", echo.out, "CSV file (default: standard output)");
 
+    SweepOptions sweep;
+    auto* sweepCmd = app.add_subcommand(
+        "sweep", "Accuracy against cost of the gas's integrators on a harmonic pair (CSV; orders on stderr)");
+    sweepCmd->add_option("--integrators", sweep.integrators, "Schemes to compare (default: all five)");
+    sweepCmd->add_option("--steps", sweep.steps, "Steps over the horizon, one run each (default 16 … 256)")
+        ->check(CLI::PositiveNumber);
+    sweepCmd->add_option("--stiffness", sweep.stiffness, "k of the contact [M/T²]")
+        ->check(CLI::PositiveNumber);
+    sweepCmd->add_option("--out", sweep.out, "CSV file (default: standard output)");
+
     CLI11_PARSE(app, argc, argv);
     if (app.got_subcommand("echo")) return loschmidtEcho(echo);
+    if (app.got_subcommand("sweep")) return integratorSweep(sweep);
     if (app.got_subcommand("list")) return listPresets();
     if (app.got_subcommand("run")) return runSimulation(run);
     return benchmark(bench);

@@ -183,6 +183,21 @@ private slots:
         QVERIFY(long_[1].toDouble() > short_[1].toDouble()); // and both grow with n
     }
 
+    void sweepWritesErrorsAndOrders() {
+        QTemporaryDir dir;
+        const QString out = dir.filePath("sweep.csv");
+        const auto r = cli(
+            {"sweep", "--integrators", "velocity-verlet", "rk4", "--steps", "16", "32", "64", "--out", out});
+        QCOMPARE(r.exitCode, 0);
+        const QStringList lines = readLines(out);
+        QCOMPARE(lines.size(), 7);
+        QCOMPARE(lines[0],
+                 QString("integrator,dt,trajectory_error,energy_error,forces_per_time,seconds_per_time"));
+        QVERIFY(lines[4].startsWith("rk4,"));
+        QVERIFY2(r.err.contains("velocity-verlet: measured order 2"), qPrintable(r.err));
+        QCOMPARE(cli({"sweep", "--integrators", "leapfrog"}).exitCode, 2);
+    }
+
     void benchPrintsOneJsonLine() {
         const auto r = cli({"bench", "gas-classroom", "--steps", "50", "--repeats", "3", "--threads", "1"});
         QCOMPARE(r.exitCode, 0);

@@ -1,0 +1,45 @@
+// Accuracy against cost for the gas's integrators (the methods lab): each scheme over a range of dt for
+// the same physical time, with its error, its force evaluations and its wall time per unit of time,
+// and the order of convergence measured from the errors.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace pl::md {
+
+struct SweepPoint {
+    std::string integrator;
+    double dt = 0;
+    double trajectoryError = 0; // max |x − x_exact| over the disks at the end of the horizon [L]
+    double energyError = 0;     // max |E − E₀| / E₀ over the steps
+    double forcesPerTime = 0;   // force evaluations per unit of simulated time [1/T]
+    double secondsPerTime = 0;  // wall time per unit of simulated time
+};
+
+struct SweepOrder {
+    std::string integrator;
+    double measured = 0; // least-squares slope of log error against log dt
+    int theory = 0;
+};
+
+struct SweepResult {
+    std::vector<SweepPoint> points;
+    std::vector<SweepOrder> orders;
+};
+
+// Force evaluations per step of each scheme (velocity Verlet 1, Forest–Ruth 3, RK4 4, …).
+int forcesPerStep(const std::string& integrator);
+int theoreticalOrder(const std::string& integrator);
+
+// Two equal disks (m = 1, d = 0.1) pressed together by an overlap of 0.02 and released: the gap
+// follows r(t) = d − δ cos ωt exactly while they touch, ω = √(2k). The horizon is 80 % of the quarter
+// period after which they part, so every scheme integrates one smooth contact and its error converges
+// at its theoretical order. stepsList: steps over the horizon (dt = horizon / steps).
+SweepResult sweepHarmonicPair(const std::vector<std::string>& integrators, const std::vector<int>& stepsList,
+                              double stiffness = 1000.0);
+
+// Slope of log(error) against log(dt), fitted over the points whose error is above noiseFloor.
+double fitOrder(const std::vector<double>& dts, const std::vector<double>& errors, double noiseFloor = 1e-12);
+
+} // namespace pl::md
