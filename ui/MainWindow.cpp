@@ -1,5 +1,6 @@
 // MainWindow: composition only. Actions live in MainWindowActions.cpp.
 #include "MainWindow.h"
+#include "methods/MethodsLab.h"
 
 #include "ExperimentDocument.h"
 #include "SimulationController.h"
@@ -114,6 +115,8 @@ void MainWindow::createDocks() {
     }
     if (!seriesPlots_.empty())
         findChild<QDockWidget*>(seriesPlots_.front()->spec().objectName + "Dock")->raise();
+    // Experiments on the numerics themselves, for every scene: opened from the View menu.
+    addDock(new MethodsLab(this), tr("Methods lab"), "methodsLabDock", Qt::RightDockWidgetArea)->hide();
 }
 
 void MainWindow::modelChanged() {
