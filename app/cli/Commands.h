@@ -51,6 +51,9 @@ struct SweepOptions {
     std::string out; // CSV; standard output when empty
 };
 
+// Writes text to path atomically (kCannotWrite and a message when it cannot), or to standard output.
+int writeOrPrint(const std::string& path, const std::string& text);
+
 int listPresets();
 int runSimulation(const RunOptions& options);
 int benchmark(const BenchOptions& options);

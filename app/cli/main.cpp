@@ -1,5 +1,6 @@
 // particlelab-cli: run, benchmark and list experiments without a display.
 #include "Commands.h"
+#include "MethodsCommands.h"
 
 #include <CLI/CLI.hpp>
 
@@ -65,7 +66,48 @@ int main(int argc, char** argv) {
         ->check(CLI::PositiveNumber);
     sweepCmd->add_option("--out", sweep.out, "CSV file (default: standard output)");
 
+    StabilityOptions stability;
+    auto* stabilityCmd = app.add_subcommand(
+        "stability",
+        "Stability map of the gas's integrators: dt × stiffness, each cell stable, inaccurate or "
+        "unstable (CSV; measured limits on stderr)");
+    stabilityCmd->add_option("--integrators", stability.integrators, "Schemes (default: all five)");
+    stabilityCmd->add_option("--omega-dt", stability.omegaDt, "ω dt of the columns (default 0.05 … 5)")
+        ->check(CLI::PositiveNumber);
+    stabilityCmd->add_option("--stiffness", stability.stiffness, "k of the rows (default 100 1000 10000)")
+        ->check(CLI::PositiveNumber);
+    stabilityCmd->add_option("--steps", stability.steps, "Steps per cell")->check(CLI::PositiveNumber);
+    stabilityCmd
+        ->add_option("--tolerance", stability.tolerance, "Energy error above which a cell is inaccurate")
+        ->check(CLI::PositiveNumber);
+    stabilityCmd->add_option("--out", stability.out, "CSV file (default: standard output)");
+
+    FluidSweepOptions fluid;
+    auto* fluidCmd = app.add_subcommand(
+        "fluid-sweep", "The fluid against dt × iterations: density error, cost, stable / over-compressed / "
+                       "exploded (CSV)");
+    fluidCmd->add_option("--dt", fluid.dt, "Time steps [s]")->check(CLI::PositiveNumber);
+    fluidCmd->add_option("--iterations", fluid.iterations, "Solver iterations")->check(CLI::Range(1, 100));
+    fluidCmd->add_option("--duration", fluid.duration, "Simulated time of each cell [s]")
+        ->check(CLI::PositiveNumber);
+    fluidCmd->add_option("--tolerance", fluid.tolerance, "Mean density error that counts as over-compressed")
+        ->check(CLI::PositiveNumber);
+    fluidCmd->add_option("--out", fluid.out, "CSV file (default: standard output)");
+
+    RelaxOptions relax;
+    auto* relaxCmd = app.add_subcommand(
+        "relax", "MD against planar DSMC from the same two beams: kurtosis of v_x against collisions per "
+                 "particle (CSV; cost ratio and KS test on stderr)");
+    relaxCmd->add_option("--particles", relax.particles, "Particles of each")->check(CLI::Range(4, 1 << 20));
+    relaxCmd->add_option("--collisions", relax.collisions, "Collisions per particle to run")
+        ->check(CLI::Range(0.1, 1000.0));
+    relaxCmd->add_option("--seed", relax.seed, "Random seed of the shared start");
+    relaxCmd->add_option("--out", relax.out, "CSV file (default: standard output)");
+
     CLI11_PARSE(app, argc, argv);
+    if (app.got_subcommand("stability")) return stabilityMap(stability);
+    if (app.got_subcommand("fluid-sweep")) return fluidSweep(fluid);
+    if (app.got_subcommand("relax")) return relaxMdDsmc(relax);
     if (app.got_subcommand("echo")) return loschmidtEcho(echo);
     if (app.got_subcommand("sweep")) return integratorSweep(sweep);
     if (app.got_subcommand("list")) return listPresets();

@@ -18,6 +18,13 @@ double ksDistance(std::vector<double>& sample, const std::function<double(double
 // Critical KS distance for a sample of size n at significance 5 % (1.358/√n) or 1 % (1.628/√n).
 double ksCritical(double n, double significance);
 
+// Two-sample KS distance sup |F_a − F_b| of two empirical distributions. Sorts its arguments.
+double ksTwoSampleDistance(std::vector<double>& a, std::vector<double>& b);
+// Asymptotic probability that two samples of sizes na and nb from one distribution lie this far apart or
+// farther: Q_KS(λ) = 2 Σ (−1)^(j−1) e^(−2 j² λ²), λ = (√n_e + 0.12 + 0.11/√n_e) D, n_e = na nb/(na + nb)
+// (Stephens 1970).
+double ksTwoSamplePValue(double distance, double na, double nb);
+
 struct PowerLawFit {
     double exponent = 0.0;  // p in y = c x^p
     double prefactor = 0.0; // c

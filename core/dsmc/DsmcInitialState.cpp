@@ -59,11 +59,13 @@ void DsmcModel::addPopulation(long long count, double drift, std::uint8_t origin
         const auto [gz, unused] =
             gaussianPair(randomWords(seed_, RngPurpose::InitialVelocity, id, 2 * stream + 1));
         (void)unused;
-        state_.append({sigma * gx, sigma * gy, sigma * gz}, origin);
+        state_.append({sigma * gx, sigma * gy, params_.planar() ? 0.0 : sigma * gz}, origin);
     }
     const double sum2 = removeMean(state_, first);
-    const double scale =
-        count > 1 && sum2 > 0 ? std::sqrt(3.0 * static_cast<double>(count) * sigma * sigma / sum2) : 0.0;
+    const auto components = static_cast<double>(params_.velocityComponents);
+    const double scale = count > 1 && sum2 > 0
+                             ? std::sqrt(components * static_cast<double>(count) * sigma * sigma / sum2)
+                             : 0.0;
     for (std::size_t i = first; i < state_.size(); ++i) {
         state_.vx[i] = scale * state_.vx[i] + drift;
         state_.vy[i] *= scale;

@@ -38,4 +38,16 @@ inline void scatterIsotropic(Velocity& a, Velocity& b, double ma, double mb, dou
     b = {cm.x - ma / total * r.x, cm.y - ma / total * r.y, cm.z - ma / total * r.z};
 }
 
+// The same in the plane (2 velocity components, z stays 0): c_r turns to the angle φ = 2π u, uniform,
+// the isotropic scattering of 2D hard disks averaged over impact parameters.
+inline void scatterInPlane(Velocity& a, Velocity& b, double ma, double mb, double u) {
+    const double total = ma + mb;
+    const double cmx = (ma * a.x + mb * b.x) / total, cmy = (ma * a.y + mb * b.y) / total;
+    const double cr = std::sqrt((a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y));
+    const double phi = 2.0 * std::numbers::pi * u;
+    const double rx = cr * std::cos(phi), ry = cr * std::sin(phi);
+    a = {cmx + mb / total * rx, cmy + mb / total * ry, 0.0};
+    b = {cmx - ma / total * rx, cmy - ma / total * ry, 0.0};
+}
+
 } // namespace pl::dsmc

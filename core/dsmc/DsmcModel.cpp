@@ -118,7 +118,11 @@ void DsmcModel::step() {
         if (unitOpen32(w[2]) * sigmaCrMax_ >= sigmaCr) continue;
         const Philox4x32 angles =
             randomWords(seed_, RngPurpose::Collision, stream, 2 * static_cast<std::uint64_t>(c) + 1);
-        dsmc::scatterIsotropic(a, b, m, m, unitOpen(angles[0], angles[1]), unitOpen(angles[2], angles[3]));
+        if (params_.planar())
+            dsmc::scatterInPlane(a, b, m, m, unitOpen(angles[0], angles[1]));
+        else
+            dsmc::scatterIsotropic(a, b, m, m, unitOpen(angles[0], angles[1]),
+                                   unitOpen(angles[2], angles[3]));
         state_.setVelocity(i, a);
         state_.setVelocity(j, b);
         ++collisionsThisStep_;

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <sstream>
 
 namespace pl {
@@ -47,15 +48,18 @@ DsmcObservables DsmcModel::observe() const {
     o.tx = m * sx * inv / kBoltzmann;
     o.ty = m * sy * inv / kBoltzmann;
     o.tz = m * sz * inv / kBoltzmann;
-    o.t = (o.tx + o.ty + o.tz) / 3.0;
-    o.tPerp = 0.5 * (o.ty + o.tz);
+    const bool planar = params_.planar();
+    o.t = planar ? 0.5 * (o.tx + o.ty) : (o.tx + o.ty + o.tz) / 3.0;
+    o.tPerp = planar ? o.ty : 0.5 * (o.ty + o.tz);
     o.kurtosisVx = sx > 0 ? x4 * inv / ((sx * inv) * (sx * inv)) : kNaN;
-    // Equilibrium moments at the sampled energy: ⟨c^2k⟩_eq = (2k+1)!! (kT/m)^k with kT/m = ⟨c²⟩/3.
-    const double s2 = (sx + sy + sz) * inv / 3.0;
-    o.m4 = s2 > 0 ? c4 * inv / (15.0 * s2 * s2) : kNaN;
-    o.m6 = s2 > 0 ? c6 * inv / (105.0 * s2 * s2 * s2) : kNaN;
-    o.m8 = s2 > 0 ? c8 * inv / (945.0 * s2 * s2 * s2 * s2) : kNaN;
-    if (params_.initial == "bkw" && collisions_.kind == CollisionModel::Kind::Maxwell) {
+    // Equilibrium moments at the sampled energy, kT/m = ⟨c²⟩/D: ⟨c^2k⟩_eq = (2k+1)!! (kT/m)^k in 3D and
+    // k! (2 kT/m)^k in the plane (the speed² is then exponential).
+    const double s2 = (sx + sy + sz) * inv / static_cast<double>(params_.velocityComponents);
+    const double eq4 = planar ? 8.0 : 15.0, eq6 = planar ? 48.0 : 105.0, eq8 = planar ? 384.0 : 945.0;
+    o.m4 = s2 > 0 ? c4 * inv / (eq4 * s2 * s2) : kNaN;
+    o.m6 = s2 > 0 ? c6 * inv / (eq6 * s2 * s2 * s2) : kNaN;
+    o.m8 = s2 > 0 ? c8 * inv / (eq8 * s2 * s2 * s2 * s2) : kNaN;
+    if (!planar && params_.initial == "bkw" && collisions_.kind == CollisionModel::Kind::Maxwell) {
         // Time in mean collision times: ν = n σ c_r, the same at every temperature for Maxwell molecules.
         const double K = dsmc::bkwK(numberDensity() * collisions_.prefactor * time_);
         o.m4Bkw = dsmc::bkwMomentRatio(2, K);
@@ -77,8 +81,10 @@ DsmcObservables DsmcModel::observe() const {
         for (int b = 0; b < kKlBins; ++b) {
             if (counts[b] == 0) continue;
             const double p = counts[b] * inv;
-            const double q =
-                dsmc::maxwellSpeedCdf((b + 1) * width, s2) - dsmc::maxwellSpeedCdf(b * width, s2);
+            const auto cdf = [planar, s2](double c) {
+                return planar ? 1.0 - std::exp(-c * c / (2.0 * s2)) : dsmc::maxwellSpeedCdf(c, s2);
+            };
+            const double q = cdf((b + 1) * width) - cdf(b * width);
             o.klDivergence += p * std::log(p / std::max(q, 1e-300));
         }
     }
@@ -170,7 +176,18 @@ std::vector<NamedHistogram> DsmcModel::histograms() const {
         vx.counts.add(state_.vx[i]);
     }
     // The overlay is the Maxwellian the cell relaxes to: same T, same mean velocity.
-    speed.theoryDensity = [sigma2, drift](double v) { return dsmc::maxwellianSpeedPdf(v, sigma2, drift); };
+    if (params_.planar()) // in the plane: (v/σ²) exp(−(v − u)²/2σ²) e^(−vu/σ²) I₀(vu/σ²), overflow-free
+        speed.theoryDensity = [sigma2, drift](double v) {
+            const double z = v * drift / sigma2;
+            // e^(−z) I₀(z) → 1/√(2πz) for large z (Abramowitz & Stegun 9.7.1), where I₀ overflows
+            const double scaledI0 = z < 500 ? std::exp(-z) * std::cyl_bessel_i(0.0, z)
+                                            : 1.0 / std::sqrt(2 * std::numbers::pi * z);
+            return v / sigma2 * std::exp(-(v - drift) * (v - drift) / (2 * sigma2)) * scaledI0;
+        };
+    else
+        speed.theoryDensity = [sigma2, drift](double v) {
+            return dsmc::maxwellianSpeedPdf(v, sigma2, drift);
+        };
     const double ux = o.ux;
     vx.theoryDensity = [sigma2, ux](double v) {
         return std::exp(-(v - ux) * (v - ux) / (2 * sigma2)) / std::sqrt(2 * std::numbers::pi * sigma2);

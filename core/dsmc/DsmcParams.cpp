@@ -22,6 +22,12 @@ void DsmcParams::validate() const {
     if (static_cast<double>(n) > kMaxParticles)
         throw ParamError("count_1", std::to_string(n) + " particles exceed the limit of " +
                                         std::to_string(static_cast<long long>(kMaxParticles)));
+    if (velocityComponents != 2 && velocityComponents != 3)
+        throw ParamError("velocity_components", "must be 2 (in the plane) or 3 (in space), not " +
+                                                    std::to_string(velocityComponents));
+    if (planar() && initial == "bkw")
+        throw ParamError("velocity_components",
+                         "the BKW solution is for 3 velocity components; use 3, or another initial state");
 }
 
 const std::vector<ParamField<DsmcParams>>& DsmcParams::fields() {
@@ -71,6 +77,12 @@ const std::vector<ParamField<DsmcParams>>& DsmcParams::fields() {
                                       "First guess of (σ c_r)_max (the seed: 1e-18); 0 estimates it from the "
                                       "initial state. It is raised whenever a pair exceeds it.",
                                       0, 1e-5, 0, d.sigmaCrMaxInit)));
+        f.push_back(bindInteger(
+            &P::velocityComponents,
+            makeSpec("velocity_components", "Velocity components", "", "Collisions",
+                     "3: molecules scatter isotropically in space; 2: velocities and scattering stay in the "
+                     "plane, like the 2D disk gas (for comparing the two).",
+                     2, 3, 1, double(d.velocityComponents))));
         f.push_back(
             bindText(&P::initial, makeChoice("initial", "Initial state", "Initial state",
                                              "two-beams: the seed's beams along x; maxwellian: one gas at "

@@ -24,6 +24,9 @@ struct DsmcParams {
     double vhsOmega = 0.77;            // VHS viscosity index ω (O2)
     double maxwellSigmaCr = 1.5e-17;   // σ c_r of Maxwell molecules [m³/s]
     double sigmaCrMaxInit = 0.0;       // first (σ c_r)_max [m³/s]; 0: estimated from the initial state
+    // 3: isotropic scattering in space (a real gas); 2: velocities and scattering in the plane, the
+    // velocity space of the 2D disk gas (the methods lab compares the two on one observable)
+    long long velocityComponents = 3;
 
     // Initial state
     std::string initial = "two-beams"; // two-beams | maxwellian | bkw
@@ -38,6 +41,7 @@ struct DsmcParams {
     long long histBins = 25;
 
     double mass() const; // [kg]
+    bool planar() const { return velocityComponents == 2; }
     long long totalCount() const { return initial == "two-beams" ? count1 + count2 : count1; }
     // Cross-field checks; throws ParamError naming the key.
     void validate() const;

@@ -17,6 +17,8 @@ namespace pl {
 
 enum class MdIntegrator { VelocityVerlet, SymplecticEuler, ExplicitEuler, RungeKutta4, ForestRuth };
 MdIntegrator integratorFromName(const std::string& name);
+// Largest ω·dt for which the scheme is stable on x'' = −ω² x (physics.md §1); 0 for explicit Euler.
+double stabilityLimit(MdIntegrator integrator);
 
 struct MdObservables {
     std::int64_t step = 0;

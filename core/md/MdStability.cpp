@@ -9,6 +9,16 @@ namespace pl {
 
 namespace {
 
+std::string fixed(double v, int digits) {
+    std::ostringstream out;
+    out.setf(std::ios::fixed);
+    out.precision(digits);
+    out << v;
+    return out.str();
+}
+
+} // namespace
+
 // Largest ω·dt for which each scheme is stable on x'' = −ω² x (physics.md §1; Forest–Ruth from its
 // amplification matrix, about 1.57). Explicit Euler has none.
 double stabilityLimit(MdIntegrator integrator) {
@@ -25,16 +35,6 @@ double stabilityLimit(MdIntegrator integrator) {
     }
     return 0.0;
 }
-
-std::string fixed(double v, int digits) {
-    std::ostringstream out;
-    out.setf(std::ios::fixed);
-    out.precision(digits);
-    out << v;
-    return out.str();
-}
-
-} // namespace
 
 double MdModel::totalEnergy() {
     refreshEnergies();

@@ -198,6 +198,61 @@ private slots:
         QCOMPARE(cli({"sweep", "--integrators", "leapfrog"}).exitCode, 2);
     }
 
+    void stabilityWritesClassifiedCells() {
+        QTemporaryDir dir;
+        const QString out = dir.filePath("stability.csv");
+        const auto r = cli({"stability", "--integrators", "velocity-verlet", "--stiffness", "1000",
+                            "--omega-dt", "1", "2.5", "--steps", "500", "--out", out});
+        QCOMPARE(r.exitCode, 0);
+        const QStringList lines = readLines(out);
+        QCOMPARE(lines.size(), 3);
+        QCOMPARE(lines[0],
+                 QString("integrator,dt,stiffness,omega_dt,outcome,energy_error,steps,seconds,detail"));
+        const QStringList stable = lines[1].split(','), unstable = lines[2].split(',');
+        QCOMPARE(stable[4], QString("inaccurate")); // Verlet's bounded error at ω dt = 1 is 0.19
+        QCOMPARE(stable[6], QString("500"));
+        QCOMPARE(unstable[4], QString("unstable"));
+        QVERIFY(unstable[6].toLongLong() < 100);
+        QVERIFY2(r.err.contains("velocity-verlet, k = 1000: stable up to ω dt = 1 (linear theory 2)"),
+                 qPrintable(r.err));
+        QCOMPARE(cli({"stability", "--integrators", "leapfrog"}).exitCode, 2);
+    }
+
+    void fluidSweepWritesDensityErrorsAndCost() {
+        QTemporaryDir dir;
+        const QString out = dir.filePath("fluid.csv");
+        const auto r = cli(
+            {"fluid-sweep", "--dt", "0.02", "0.08", "--iterations", "4", "--duration", "0.3", "--out", out});
+        QCOMPARE(r.exitCode, 0);
+        const QStringList lines = readLines(out);
+        QCOMPARE(lines.size(), 3);
+        QCOMPARE(lines[0], QString("dt,iterations,outcome,density_error_mean,density_error_max,max_speed,"
+                                   "seconds_per_time,steps,detail"));
+        const QStringList fine = lines[1].split(','), coarse = lines[2].split(',');
+        QCOMPARE(fine[2], QString("stable"));
+        QCOMPARE(coarse[2], QString("over-compressed"));
+        QVERIFY(coarse[3].toDouble() > fine[3].toDouble());
+        QCOMPARE(fine[7], QString("15"));
+    }
+
+    void relaxComparesMdAndDsmc() {
+        QTemporaryDir dir;
+        const QString out = dir.filePath("relax.csv");
+        const auto r = cli({"relax", "--particles", "256", "--collisions", "6", "--out", out});
+        QCOMPARE(r.exitCode, 0);
+        const QStringList lines = readLines(out);
+        QCOMPARE(lines[0], QString("method,collisions_per_particle,kurtosis_vx,seconds"));
+        int md = 0, dsmc = 0;
+        for (const QString& line : lines.mid(1)) {
+            const QStringList f = line.split(',');
+            QCOMPARE(f.size(), 4);
+            (f[0] == "md" ? md : dsmc) += 1;
+        }
+        QVERIFY(md > 5 && dsmc > 5);
+        QVERIFY2(r.err.contains("cost ratio") && r.err.contains("KS distance"), qPrintable(r.err));
+        QCOMPARE(cli({"relax", "--particles", "2"}).exitCode, 105); // CLI11: out of range
+    }
+
     void benchPrintsOneJsonLine() {
         const auto r = cli({"bench", "gas-classroom", "--steps", "50", "--repeats", "3", "--threads", "1"});
         QCOMPARE(r.exitCode, 0);

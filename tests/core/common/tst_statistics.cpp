@@ -38,6 +38,31 @@ private slots:
         QVERIFY(ksDistance(copy, [](double s) { return rayleighCdf(s, 0.8, 1.0); }) > crit);
     }
 
+    void twoSampleKsDistanceAndPValue() {
+        // Exact distances of small samples: interleaved, shifted, identical.
+        std::vector<double> a{1, 3, 5, 7}, b{2, 4, 6, 8};
+        QCOMPARE(ksTwoSampleDistance(a, b), 0.25);
+        std::vector<double> c{1, 2, 3, 4}, d{5, 6, 7, 8};
+        QCOMPARE(ksTwoSampleDistance(c, d), 1.0);
+        std::vector<double> e{1, 1, 2}, f{1, 1, 2};
+        QCOMPARE(ksTwoSampleDistance(e, f), 0.0);
+        // Q_KS at the tabulated points: λ = 1.358 gives 0.05, 1.628 gives 0.01.
+        const double n = 1e8; // λ ≈ √(n/2) D for large equal samples
+        QVERIFY(std::abs(ksTwoSamplePValue(1.358 / std::sqrt(n / 2), n, n) - 0.05) < 1e-3);
+        QVERIFY(std::abs(ksTwoSamplePValue(1.628 / std::sqrt(n / 2), n, n) - 0.01) < 2e-4);
+        QCOMPARE(ksTwoSamplePValue(0.0, 100, 100), 1.0);
+        // Two samples of one distribution pass; a shifted one fails.
+        std::vector<double> x, y, z;
+        for (std::uint32_t i = 0; i < 2000; ++i) {
+            x.push_back(uniformPair(randomWords(5, RngPurpose::Spawn, i, 0)).a);
+            y.push_back(uniformPair(randomWords(5, RngPurpose::Spawn, i, 1)).a);
+            z.push_back(uniformPair(randomWords(5, RngPurpose::Spawn, i, 2)).a + 0.1);
+        }
+        std::vector<double> x2 = x;
+        QVERIFY(ksTwoSamplePValue(ksTwoSampleDistance(x, y), 2000, 2000) > 0.01);
+        QVERIFY(ksTwoSamplePValue(ksTwoSampleDistance(x2, z), 2000, 2000) < 1e-6);
+    }
+
     void powerLawFitRecoversExponent() {
         std::vector<double> x{0.1, 0.05, 0.025, 0.0125}, y;
         for (double h : x) y.push_back(3.0 * h * h * h * h);

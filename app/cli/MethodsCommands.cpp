@@ -1,0 +1,113 @@
+#include "MethodsCommands.h"
+
+#include "Commands.h"
+#include "md/MdModel.h"
+#include "md/StabilityMap.h"
+#include "methods/MdVsDsmc.h"
+#include "pbf/FluidSweep.h"
+
+#include <cmath>
+#include <iostream>
+#include <map>
+#include <sstream>
+
+namespace pl::cli {
+
+namespace {
+
+// A CSV field: quoted when it holds a comma, a quote or a line break (RFC 4180).
+std::string csvField(const std::string& text) {
+    if (text.find_first_of(",\"\n") == std::string::npos) return text;
+    std::string quoted = "\"";
+    for (char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
+    return quoted + '"';
+}
+
+std::vector<double> logSpaced(double first, double last, int count) {
+    std::vector<double> v;
+    for (int i = 0; i < count; ++i) v.push_back(first * std::pow(last / first, i / (count - 1.0)));
+    return v;
+}
+
+} // namespace
+
+int stabilityMap(const StabilityOptions& options) {
+    const std::vector<double> columns = options.omegaDt.empty() ? logSpaced(0.05, 5.0, 25) : options.omegaDt;
+    md::StabilitySetup setup;
+    setup.steps = options.steps;
+    setup.tolerance = options.tolerance;
+    std::ostringstream csv;
+    csv.precision(10);
+    csv << "integrator,dt,stiffness,omega_dt,outcome,energy_error,steps,seconds,detail\n";
+    for (const auto& name : options.integrators) {
+        try {
+            integratorFromName(name);
+        } catch (const std::exception& e) {
+            std::cerr << "particlelab-cli: " << e.what() << "\n";
+            return kBadInput;
+        }
+        for (double k : options.stiffness) {
+            std::vector<md::StabilityCell> row;
+            const double omega = md::cagedOmega(k);
+            for (double wdt : columns) {
+                row.push_back(md::runStabilityCell(name, wdt / omega, k, setup));
+                const md::StabilityCell& c = row.back();
+                csv << name << ',' << c.dt << ',' << c.stiffness << ',' << c.omegaDt << ','
+                    << methods::outcomeName(c.status.outcome) << ',' << c.energyError << ',' << c.status.steps
+                    << ',' << c.status.seconds << ',' << csvField(c.status.detail) << '\n';
+            }
+            std::cerr << name << ", k = " << k << ": stable up to ω dt = " << md::measuredLimit(row)
+                      << " (linear theory " << stabilityLimit(integratorFromName(name)) << ")\n";
+        }
+    }
+    return writeOrPrint(options.out, csv.str());
+}
+
+int fluidSweep(const FluidSweepOptions& options) {
+    pbf::FluidSweepSetup setup;
+    setup.duration = options.duration;
+    setup.tolerance = options.tolerance;
+    std::ostringstream csv;
+    csv.precision(10);
+    csv << "dt,iterations,outcome,density_error_mean,density_error_max,max_speed,seconds_per_time,steps,"
+           "detail\n";
+    const Preset base = pbf::smallDamBreak();
+    for (double dt : options.dt)
+        for (int iterations : options.iterations) {
+            const pbf::FluidCell c = pbf::runFluidCell(base, dt, iterations, setup);
+            csv << c.dt << ',' << c.iterations << ',' << methods::outcomeName(c.status.outcome) << ','
+                << c.densityErrorMean << ',' << c.densityErrorMax << ',' << c.maxSpeed << ','
+                << c.secondsPerTime << ',' << c.status.steps << ',' << csvField(c.status.detail) << '\n';
+            std::cerr << "dt " << dt << ", " << iterations
+                      << " iterations: " << methods::outcomeName(c.status.outcome) << ", mean density error "
+                      << c.densityErrorMean << "\n";
+        }
+    return writeOrPrint(options.out, csv.str());
+}
+
+int relaxMdDsmc(const RelaxOptions& options) {
+    methods::TwoBeamSetup setup;
+    setup.particles = options.particles;
+    setup.collisionsPerParticle = options.collisions;
+    setup.seed = options.seed;
+    methods::MdVsDsmcResult r;
+    try {
+        r = methods::compareRelaxations(methods::relaxWithMd(setup), methods::relaxWithDsmc(setup));
+    } catch (const std::exception& e) {
+        std::cerr << "particlelab-cli: " << e.what() << "\n";
+        return kBadInput;
+    }
+    std::ostringstream csv;
+    csv.precision(10);
+    csv << "method,collisions_per_particle,kurtosis_vx,seconds\n";
+    for (const methods::RelaxationRun* run : {&r.md, &r.dsmc})
+        for (const auto& s : run->curve)
+            csv << run->method << ',' << s.collisionsPerParticle << ',' << s.kurtosisVx << ',' << s.seconds
+                << '\n';
+    std::cerr << "MD: " << r.md.seconds << " s, " << r.md.particleSteps
+              << " particle-steps; DSMC: " << r.dsmc.seconds << " s; cost ratio " << r.costRatio
+              << "; final v_x KS distance " << r.ksDistance << " (p = " << r.ksPValue << ")\n";
+    return writeOrPrint(options.out, csv.str());
+}
+
+} // namespace pl::cli
