@@ -5,6 +5,7 @@
 #include "common/AtomicFile.h"
 #include "common/TimeSeries.h"
 #include "gl/Backends.h"
+#include "md/MdModel.h"
 #include "md/MethodSweep.h"
 #include "md/TimeReversal.h"
 
@@ -179,10 +180,36 @@ int writeOrPrint(const std::string& path, const std::string& text) {
     return kOk;
 }
 
+// The sweep from a preset's gas: dt = horizon / steps, the reference Forest–Ruth at 1/8 of the finest.
+md::SweepResult sweepFromPreset(const SweepOptions& options) {
+    Preset preset = loadPreset(options.from);
+    applySets(preset, options.sets);
+    if (preset.model != "gas")
+        throw std::invalid_argument("sweep --from needs a gas preset, not " + preset.model);
+    MdModel gas;
+    gas.reset(preset);
+    const double horizon = options.horizon > 0 ? options.horizon : 64 * std::abs(gas.parameters().dt);
+    const int finest = *std::max_element(options.steps.begin(), options.steps.end());
+    const md::GasReference reference = md::gasReference(gas, horizon, horizon / (8.0 * finest));
+    md::SweepResult result;
+    for (const auto& name : options.integrators) {
+        std::vector<double> dts, errors;
+        for (int steps : options.steps) {
+            result.points.push_back(md::sweepFromState(reference, name, horizon / steps));
+            dts.push_back(result.points.back().dt);
+            errors.push_back(result.points.back().trajectoryError);
+        }
+        result.orders.push_back({name, md::fitOrder(dts, errors), md::theoreticalOrder(name)});
+    }
+    return result;
+}
+
 int integratorSweep(const SweepOptions& options) {
     md::SweepResult result;
     try {
-        result = md::sweepHarmonicPair(options.integrators, options.steps, options.stiffness);
+        result = options.from.empty()
+                     ? md::sweepHarmonicPair(options.integrators, options.steps, options.stiffness)
+                     : sweepFromPreset(options);
     } catch (const std::exception& e) {
         std::cerr << "particlelab-cli: " << e.what() << "\n";
         return kBadInput;

@@ -48,7 +48,10 @@ struct SweepOptions {
                                          "forest-ruth"};
     std::vector<int> steps{16, 32, 64, 128, 256}; // steps over the horizon
     double stiffness = 1000.0;
-    std::string out; // CSV; standard output when empty
+    std::string from;              // a gas preset: sweep from its state against a Forest–Ruth reference
+    std::vector<std::string> sets; // overrides of that preset
+    double horizon = 0;            // simulated time of each run from a preset; 0: 64 of its steps
+    std::string out;               // CSV; standard output when empty
 };
 
 // Writes text to path atomically (kCannotWrite and a message when it cannot), or to standard output.

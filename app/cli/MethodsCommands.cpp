@@ -1,6 +1,8 @@
 #include "MethodsCommands.h"
 
 #include "Commands.h"
+#include "catalog/ModelCatalog.h"
+#include "dsmc/DsmcSweep.h"
 #include "md/MdModel.h"
 #include "md/StabilityMap.h"
 #include "methods/MdVsDsmc.h"
@@ -81,6 +83,23 @@ int fluidSweep(const FluidSweepOptions& options) {
             std::cerr << "dt " << dt << ", " << iterations
                       << " iterations: " << methods::outcomeName(c.status.outcome) << ", mean density error "
                       << c.densityErrorMean << "\n";
+        }
+    return writeOrPrint(options.out, csv.str());
+}
+
+int dsmcSweep(const DsmcSweepOptions& options) {
+    const Preset base = loadPreset("dsmc-bkw");
+    std::ostringstream csv;
+    csv.precision(10);
+    csv << "particles,nu_dt,dt,outcome,moment_error,seconds,steps,detail\n";
+    for (long long n : options.particles)
+        for (double nuDt : options.nuDt) {
+            const dsmc::DsmcCell c = dsmc::runDsmcCell(base, n, nuDt);
+            csv << c.particles << ',' << c.nuDt << ',' << c.dt << ','
+                << methods::outcomeName(c.status.outcome) << ',' << c.momentError << ',' << c.seconds << ','
+                << c.status.steps << ',' << csvField(c.status.detail) << '\n';
+            std::cerr << n << " particles, ν dt " << nuDt << ": moment error " << c.momentError << ", "
+                      << c.seconds << " s\n";
         }
     return writeOrPrint(options.out, csv.str());
 }

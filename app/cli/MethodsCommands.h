@@ -25,6 +25,12 @@ struct FluidSweepOptions {
     std::string out;
 };
 
+struct DsmcSweepOptions {
+    std::vector<long long> particles{1000, 4000, 16000, 64000};
+    std::vector<double> nuDt{0.03, 0.1, 0.3, 1.0};
+    std::string out;
+};
+
 struct RelaxOptions {
     long long particles = 1024;
     double collisions = 10;
@@ -34,6 +40,7 @@ struct RelaxOptions {
 
 int stabilityMap(const StabilityOptions& options);
 int fluidSweep(const FluidSweepOptions& options);
+int dsmcSweep(const DsmcSweepOptions& options);
 int relaxMdDsmc(const RelaxOptions& options);
 
 } // namespace pl::cli

@@ -64,6 +64,12 @@ int main(int argc, char** argv) {
         ->check(CLI::PositiveNumber);
     sweepCmd->add_option("--stiffness", sweep.stiffness, "k of the contact [M/T²]")
         ->check(CLI::PositiveNumber);
+    sweepCmd->add_option("--from", sweep.from,
+                         "A gas preset: sweep from its state, errors against a Forest–Ruth reference");
+    sweepCmd->add_option("--set", sweep.sets, "Override a parameter of --from: key=value (repeatable)");
+    sweepCmd
+        ->add_option("--horizon", sweep.horizon, "Simulated time of each run from --from (default 64 steps)")
+        ->check(CLI::NonNegativeNumber);
     sweepCmd->add_option("--out", sweep.out, "CSV file (default: standard output)");
 
     StabilityOptions stability;
@@ -94,6 +100,15 @@ int main(int argc, char** argv) {
         ->check(CLI::PositiveNumber);
     fluidCmd->add_option("--out", fluid.out, "CSV file (default: standard output)");
 
+    DsmcSweepOptions dsmc;
+    auto* dsmcCmd = app.add_subcommand(
+        "dsmc-sweep", "DSMC against the exact BKW relaxation: particles × ν dt, moment error and cost (CSV)");
+    dsmcCmd->add_option("--particles", dsmc.particles, "Particles in the cell")
+        ->check(CLI::Range(2, 1 << 24));
+    dsmcCmd->add_option("--nu-dt", dsmc.nuDt, "Collision probabilities per particle and step")
+        ->check(CLI::PositiveNumber);
+    dsmcCmd->add_option("--out", dsmc.out, "CSV file (default: standard output)");
+
     RelaxOptions relax;
     auto* relaxCmd = app.add_subcommand(
         "relax", "MD against planar DSMC from the same two beams: kurtosis of v_x against collisions per "
@@ -107,6 +122,7 @@ int main(int argc, char** argv) {
     CLI11_PARSE(app, argc, argv);
     if (app.got_subcommand("stability")) return stabilityMap(stability);
     if (app.got_subcommand("fluid-sweep")) return fluidSweep(fluid);
+    if (app.got_subcommand("dsmc-sweep")) return dsmcSweep(dsmc);
     if (app.got_subcommand("relax")) return relaxMdDsmc(relax);
     if (app.got_subcommand("echo")) return loschmidtEcho(echo);
     if (app.got_subcommand("sweep")) return integratorSweep(sweep);

@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <numbers>
 #include <stdexcept>
 
@@ -89,6 +90,89 @@ SweepResult sweepHarmonicPair(const std::vector<std::string>& integrators, const
         result.orders.push_back({name, fitOrder(dts, errors), theoreticalOrder(name)});
     }
     return result;
+}
+
+namespace {
+
+std::unique_ptr<MdModel> startFrom(const GasReference& reference, const std::string& integrator, double dt) {
+    auto model = std::make_unique<MdModel>();
+    Preset preset = reference.preset;
+    preset.params["integrator"] = integrator;
+    preset.params["dt"] = dt;
+    preset.params["wall_mode"] = std::string("reflecting"); // thermal walls draw random numbers per step
+    model->reset(preset);
+    model->placeParticles(reference.start);
+    return model;
+}
+
+// Positions by disk: ids are the start order (placeParticles numbers them so); the model sorts in space.
+void positionsByDisk(const MdModel& model, std::vector<double>& x, std::vector<double>& y) {
+    const MdState& s = model.state();
+    x.assign(s.size(), 0.0);
+    y.assign(s.size(), 0.0);
+    for (std::size_t i = 0; i < s.size(); ++i) {
+        x[s.id[i]] = s.x[i];
+        y[s.id[i]] = s.y[i];
+    }
+}
+
+} // namespace
+
+GasReference gasReference(const MdModel& source, double horizon, double referenceDt) {
+    if (!(horizon > 0) || !(referenceDt > 0) || referenceDt > horizon)
+        throw std::invalid_argument("the reference needs 0 < dt ≤ horizon");
+    GasReference reference;
+    reference.preset = source.toPreset();
+    reference.horizon = horizon;
+    reference.referenceDt = referenceDt;
+    const MdState& s = source.state();
+    for (std::size_t i = 0; i < s.size(); ++i)
+        reference.start.push_back({s.x[i], s.y[i], s.vx[i], s.vy[i], s.species[i]});
+    if (reference.start.empty()) throw std::invalid_argument("the gas has no disks to follow");
+    auto model = startFrom(reference, "forest-ruth", referenceDt);
+    const auto steps = std::llround(horizon / referenceDt);
+    for (long long k = 0; k < steps; ++k) model->step();
+    if (model->failure())
+        throw std::runtime_error("the reference run failed: " + model->failure()->message());
+    positionsByDisk(*model, reference.x, reference.y);
+    return reference;
+}
+
+SweepPoint sweepFromState(const GasReference& reference, const std::string& integrator, double dt) {
+    SweepPoint p;
+    p.integrator = integrator;
+    p.dt = dt;
+    p.forcesPerTime = forcesPerStep(integrator) / dt;
+    auto model = startFrom(reference, integrator, dt);
+    const double e0 = model->totalEnergy();
+    const auto steps = std::max<long long>(1, std::llround(reference.horizon / dt));
+    double seconds = 0; // the steps only, not the energy checks between them
+    for (long long k = 0; k < steps; ++k) {
+        const auto start = std::chrono::steady_clock::now();
+        model->step();
+        seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        if (model->failure()) {
+            p.failure = model->failure()->message();
+            break;
+        }
+        p.energyError = std::max(p.energyError, std::abs(model->totalEnergy() - e0) / std::abs(e0));
+    }
+    p.secondsPerTime = seconds / (static_cast<double>(steps) * dt);
+    // A horizon of a few steps ends before the model's periodic health check: judge the energy here.
+    if (p.failure.empty() && !(p.energyError <= 1.0))
+        p.failure = "the energy changed by more than 100 % within the horizon: unstable at this dt";
+    if (!p.failure.empty()) {
+        p.trajectoryError = p.energyError = std::numeric_limits<double>::quiet_NaN();
+        return p;
+    }
+    std::vector<double> x, y;
+    positionsByDisk(*model, x, y);
+    double sum = 0;
+    for (std::size_t i = 0; i < x.size(); ++i)
+        sum += (x[i] - reference.x[i]) * (x[i] - reference.x[i]) +
+               (y[i] - reference.y[i]) * (y[i] - reference.y[i]);
+    p.trajectoryError = std::sqrt(sum / static_cast<double>(x.size()));
+    return p;
 }
 
 } // namespace pl::md

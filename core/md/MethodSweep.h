@@ -3,18 +3,26 @@
 // and the order of convergence measured from the errors.
 #pragma once
 
+#include "common/Preset.h"
+
 #include <string>
 #include <vector>
+
+namespace pl {
+class MdModel;
+struct MdParticle;
+} // namespace pl
 
 namespace pl::md {
 
 struct SweepPoint {
     std::string integrator;
     double dt = 0;
-    double trajectoryError = 0; // max |x − x_exact| over the disks at the end of the horizon [L]
+    double trajectoryError = 0; // at the horizon [L]: the pair's max |x − x_exact|, the gas's rms distance
     double energyError = 0;     // max |E − E₀| / E₀ over the steps
     double forcesPerTime = 0;   // force evaluations per unit of simulated time [1/T]
     double secondsPerTime = 0;  // wall time per unit of simulated time
+    std::string failure;        // why the run stopped early (a blow-up); its errors are then not plotted
 };
 
 struct SweepOrder {
@@ -38,6 +46,23 @@ int theoreticalOrder(const std::string& integrator);
 // at its theoretical order. stepsList: steps over the horizon (dt = horizon / steps).
 SweepResult sweepHarmonicPair(const std::vector<std::string>& integrators, const std::vector<int>& stepsList,
                               double stiffness = 1000.0);
+
+// The user's gas as a sweep's start: its parameters, obstacles and particles now, and where each disk
+// is after the horizon by Forest–Ruth at a step far below every swept one (the reference trajectory).
+struct GasReference {
+    Preset preset;
+    std::vector<MdParticle> start;
+    double horizon = 0;
+    double referenceDt = 0;
+    std::vector<double> x, y; // reference positions at the horizon, by disk (start order)
+};
+
+// horizon: simulated time, short enough that chaos has not yet amplified round-off (a few dozen of the
+// user's steps). The reference runs at referenceDt; both are positive whatever the sign of the gas's dt.
+GasReference gasReference(const MdModel& source, double horizon, double referenceDt);
+// One point of the sweep from the user's gas: rms position error against the reference at the horizon,
+// max relative energy error, cost. A blow-up fills failure instead of throwing.
+SweepPoint sweepFromState(const GasReference& reference, const std::string& integrator, double dt);
 
 // Slope of log(error) against log(dt), fitted over the points whose error is above noiseFloor.
 double fitOrder(const std::vector<double>& dts, const std::vector<double>& errors, double noiseFloor = 1e-12);

@@ -1,5 +1,7 @@
 // The accuracy-against-cost sweep: on the harmonic pair every integrator converges at its theoretical
 // order, and the cost columns count what each scheme does.
+#include "catalog/ModelCatalog.h"
+#include "md/MdModel.h"
 #include "md/MethodSweep.h"
 
 #include <QtTest>
@@ -29,6 +31,33 @@ private slots:
         // Verlet is symplectic: bounded energy error far below explicit Euler's growth.
         const SweepResult euler = sweepHarmonicPair({"explicit-euler"}, {20});
         QVERIFY(euler.points[0].energyError > 10 * r.points[0].energyError);
+    }
+
+    void sweepsFromAGasState() {
+        // The classroom gas after 300 steps (contacts under way), 64 of its steps as the horizon.
+        pl::MdModel gas;
+        gas.reset(pl::loadPreset("gas-classroom"));
+        for (int s = 0; s < 300; ++s) gas.step();
+        const double horizon = 64 * gas.parameters().dt;
+        const GasReference reference = gasReference(gas, horizon, horizon / 1024);
+        QCOMPARE(reference.x.size(), std::size_t(2500));
+        std::vector<double> dts, errors;
+        for (int steps : {16, 32, 64, 128}) {
+            const SweepPoint p = sweepFromState(reference, "velocity-verlet", horizon / steps);
+            QVERIFY(p.failure.empty());
+            dts.push_back(p.dt);
+            errors.push_back(p.trajectoryError);
+        }
+        const double order = fitOrder(dts, errors);
+        qInfo("velocity Verlet from the gas: order %.2f, rms error %.2e at the gas's own dt", order,
+              errors[2]);
+        QVERIFY(std::abs(order - 2) < 0.3);
+        // With forces present symplectic Euler is first order again, behind Verlet.
+        QVERIFY(sweepFromState(reference, "symplectic-euler", horizon / 64).trajectoryError > 2 * errors[2]);
+        // A step far beyond the contact's stability: stopped, reported, and no number plotted.
+        const SweepPoint blown = sweepFromState(reference, "velocity-verlet", horizon / 2);
+        QVERIFY(!blown.failure.empty());
+        QVERIFY(std::isnan(blown.trajectoryError));
     }
 
     void orderFitIgnoresTheNoiseFloor() {
