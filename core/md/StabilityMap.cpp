@@ -21,7 +21,7 @@ constexpr double kAmplitude = 0.1 * kPreload;
 } // namespace
 
 double cagedOmega(double stiffness) {
-    return std::sqrt(2.0 * stiffness / kMass); // two springs k in parallel on the light disk
+    return std::sqrt(2.0 * stiffness); // two springs k·m in parallel on the light disk of mass m
 }
 
 StabilityCell runStabilityCell(const std::string& integrator, double dt, double stiffness,
@@ -38,7 +38,7 @@ StabilityCell runStabilityCell(const std::string& integrator, double dt, double 
                          {"count_b", 2.0},
                          {"integrator", integrator},
                          {"dt", dt},
-                         {"stiffness", stiffness},
+                         {"stiffness", stiffness * kMass}, // ω = √(2k), as a unit-mass pair's
                          {"diameter_a", kDiameter},
                          {"diameter_b", kDiameter},
                          {"mass_a", kMass},
@@ -51,7 +51,7 @@ StabilityCell runStabilityCell(const std::string& integrator, double dt, double 
             {{kAmplitude, 0.0, 0.0, 0.0, 0}, {-heavyX, 0.0, 0.0, 0.0, 1}, {heavyX, 0.0, 0.0, 0.0, 1}});
         // The springs' preload holds k δ₀² of energy that never moves; errors are relative to the
         // oscillation's k A².
-        const double resting = stiffness * kPreload * kPreload;
+        const double resting = stiffness * kMass * kPreload * kPreload;
         const double e0 = model.totalEnergy() - resting;
         status.outcome = methods::CellOutcome::Stable;
         for (long long s = 0; s < setup.steps; ++s) {

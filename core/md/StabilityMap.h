@@ -31,7 +31,9 @@ struct StabilityCell {
 // loop and integrators. Growth by the blow-up factor keeps the amplitude far inside the overlap, so the
 // linear limits apply. (A contact that begins from free flight lasts only π/(ω dt) steps; there Verlet
 // already gains energy from ω dt ≈ 1.6 on. The map is about the integrators, not about that.)
-// ω of the caged disk at stiffness k: the map's dt for a given ω dt is ω dt / cagedOmega(k).
+// ω of the caged disk at stiffness k: √(2k), the contact frequency of two unit-mass disks of the gas
+// (the cage's springs are k·m for its light disk of mass m), so a map cell (dt, k) stands for the same
+// cell of a unit-mass gas; a gas of mass m sits at k/m. The map's dt for a given ω dt is ω dt / √(2k).
 double cagedOmega(double stiffness);
 
 StabilityCell runStabilityCell(const std::string& integrator, double dt, double stiffness,
