@@ -117,8 +117,8 @@ void MainWindow::createDocks() {
         findChild<QDockWidget*>(seriesPlots_.front()->spec().objectName + "Dock")->raise();
     // Experiments on the numerics themselves, for every scene: opened from the View menu as a floating
     // window, so that while hidden it takes no room from the scene's docks.
-    QDockWidget* lab =
-        addDock(new MethodsLab(this), tr("Methods lab"), "methodsLabDock", Qt::RightDockWidgetArea);
+    QDockWidget* lab = addDock(new MethodsLab(this, controller_), tr("Methods lab"), "methodsLabDock",
+                               Qt::RightDockWidgetArea);
     lab->setFloating(true);
     lab->resize(760, 600);
     lab->hide();

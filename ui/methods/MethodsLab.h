@@ -1,34 +1,47 @@
-// The methods lab dock: experiments on the numerics rather than on one scene, each run point by point in
-// a worker thread (progress bar, Cancel; the window never freezes) and plotted as it comes.
-//  - Time reversal: the Loschmidt echo in double, float and bit-reversible integers (md/TimeReversal).
-//  - Accuracy against cost: the five integrators on a harmonic pair, error against force evaluations
-//    per unit time, measured orders in the legend (md/MethodSweep).
+// The methods lab: experiments on the numerics rather than on one scene, one tab each, sharing one runner
+// (a worker thread with progress and Cancel; the window never freezes):
+//  - Time reversal: the Loschmidt echo (EchoPage).
+//  - Accuracy vs cost: the gas's integrators (GasSweepPage), the fluid's dt × iterations (FluidPage),
+//    DSMC's particles × ν dt (DsmcPage), each with Recommend.
+//  - Stability: the gas's stability map (StabilityPage); the fluid's is on its page.
+//  - MD vs DSMC: the cheapest model that will do (RelaxPage).
 #pragma once
 
 #include <QWidget>
-#include <atomic>
-#include <functional>
 #include <vector>
 
 class QCustomPlot;
-class QLabel;
-class QProgressBar;
-class QPushButton;
-class QThread;
+class QTabWidget;
 
 namespace pl::ui {
+
+class DsmcPage;
+class EchoPage;
+class FluidPage;
+class GasSweepPage;
+class LabRunner;
+class RelaxPage;
+class SimulationController;
+class StabilityPage;
 
 class MethodsLab : public QWidget {
     Q_OBJECT
 public:
-    explicit MethodsLab(QWidget* parent = nullptr);
+    explicit MethodsLab(QWidget* parent = nullptr, SimulationController* controller = nullptr);
     ~MethodsLab() override;
 
-    void setEchoSteps(std::vector<long long> steps) { echoSteps_ = std::move(steps); }
-    void setSweepSteps(std::vector<int> steps) { sweepSteps_ = std::move(steps); }
-    QCustomPlot* echoPlot() const { return echoPlot_; }
-    QCustomPlot* sweepPlot() const { return sweepPlot_; }
-    bool isRunning() const { return worker_ != nullptr; }
+    void setEchoSteps(std::vector<long long> steps);
+    void setSweepSteps(std::vector<int> steps);
+    QCustomPlot* echoPlot() const;
+    QCustomPlot* sweepPlot() const;
+    GasSweepPage* gasSweepPage() const { return gasSweep_; }
+    StabilityPage* stabilityPage() const { return stability_; }
+    FluidPage* fluidPage() const { return fluid_; }
+    DsmcPage* dsmcPage() const { return dsmc_; }
+    RelaxPage* relaxPage() const { return relax_; }
+    QTabWidget* tabs() const { return tabs_; }
+    LabRunner* runner() const { return runner_; }
+    bool isRunning() const;
 
 public slots:
     void runEcho();
@@ -39,29 +52,14 @@ signals:
     void finished();
 
 private:
-    // Runs jobs one by one in a worker thread; each returns a function that the GUI thread then calls
-    // (to plot the point). progress_ counts them; Cancel stops between jobs.
-    using Job = std::function<std::function<void()>()>;
-    void start(std::vector<Job> jobs, const QString& what);
-    void workerDone();
-
-    QWidget* makePage(QCustomPlot*& plot, const QString& xLabel, const QString& yLabel, QPushButton*& run,
-                      QLabel*& note);
-
-    std::vector<long long> echoSteps_{10, 30, 100, 300, 1000, 3000};
-    std::vector<int> sweepSteps_{16, 32, 64, 128, 256};
-    QCustomPlot* echoPlot_ = nullptr;
-    QCustomPlot* sweepPlot_ = nullptr;
-    QPushButton* echoRun_ = nullptr;
-    QPushButton* sweepRun_ = nullptr;
-    QLabel* echoNote_ = nullptr;
-    QLabel* sweepNote_ = nullptr;
-    QProgressBar* progress_ = nullptr;
-    QPushButton* cancel_ = nullptr;
-    QLabel* status_ = nullptr;
-    QThread* worker_ = nullptr;
-    std::atomic<bool> stop_{false};
-    int done_ = 0;
+    LabRunner* runner_ = nullptr;
+    QTabWidget* tabs_ = nullptr;
+    EchoPage* echo_ = nullptr;
+    GasSweepPage* gasSweep_ = nullptr;
+    StabilityPage* stability_ = nullptr;
+    FluidPage* fluid_ = nullptr;
+    DsmcPage* dsmc_ = nullptr;
+    RelaxPage* relax_ = nullptr;
 };
 
 } // namespace pl::ui

@@ -46,7 +46,8 @@ private slots:
         // Growth caught by the cell, and a step so large the disk leaves the box in one go.
         const md::StabilityCell grows = md::runStabilityCell("velocity-verlet", 2.2 / omega, 1000.0);
         QCOMPARE(grows.status.outcome, CellOutcome::Unstable);
-        const md::StabilityCell leaps = md::runStabilityCell("velocity-verlet", 200.0 / md::cagedOmega(1e5), 1e5);
+        const md::StabilityCell leaps =
+            md::runStabilityCell("velocity-verlet", 200.0 / md::cagedOmega(1e5), 1e5);
         QCOMPARE(leaps.status.outcome, CellOutcome::Unstable);
         QVERIFY(!leaps.status.detail.empty());
         for (const auto* c : {&unknown, &negative, &grows, &leaps}) QVERIFY(std::isfinite(c->energyError));
