@@ -1,9 +1,11 @@
 // particlelab: the desktop application.
 // Usage: particlelab [PRESET|FILE] [--backend cpu|gl|auto] [--screenshot FILE [--frames N]]
 //                    [--measure-fps SECONDS]
+//        particlelab --lab PAGE --plot FILE [--csv FILE]   (a methods-lab page, no window)
 #include "ExperimentDocument.h"
 #include "MainWindow.h"
 #include "SimulationController.h"
+#include "methods/LabBatch.h"
 #include "viewport/ViewportCore.h"
 
 #include <QApplication>
@@ -33,12 +35,32 @@ int main(int argc, char** argv) {
         "seconds");
     const QCommandLineOption backend("backend", "Compute backend: cpu, gl or auto (default: as last chosen).",
                                      "name");
+    const QCommandLineOption lab(
+        "lab",
+        "Run a methods-lab page (" + pl::ui::labPageNames().join(", ") +
+            ") without a window, save its plot to --plot (PNG, SVG or PDF) and quit.",
+        "page");
+    const QCommandLineOption plotFile("plot", "Image file of --lab's plot.", "file");
+    const QCommandLineOption csvFile("csv", "CSV file of --lab's plot data.", "file");
+    parser.addOption(lab);
+    parser.addOption(plotFile);
+    parser.addOption(csvFile);
     parser.addOption(backend);
     parser.addOption(screenshot);
     parser.addOption(frames);
     parser.addOption(measureFps);
     parser.process(app);
     const QStringList args = parser.positionalArguments();
+    if (parser.isSet(lab)) {
+        if (!parser.isSet(plotFile)) {
+            std::fprintf(stderr, "particlelab: --lab needs --plot FILE\n");
+            return 2;
+        }
+        const QString error =
+            pl::ui::runLabPage(parser.value(lab), parser.value(plotFile), parser.value(csvFile));
+        if (!error.isEmpty()) std::fprintf(stderr, "particlelab: %s\n", qPrintable(error));
+        return error.isEmpty() ? 0 : (error.startsWith("unknown page") ? 2 : 4);
+    }
 
     pl::ui::MainWindow window;
     if (parser.isSet(backend)) {

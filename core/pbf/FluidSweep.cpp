@@ -4,6 +4,7 @@
 #include "PbfModel.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 
 namespace pl::pbf {
@@ -52,7 +53,10 @@ FluidCell runFluidCell(const Preset& base, double dt, int iterations, const Flui
         double errorSum = 0;
         status.outcome = methods::CellOutcome::Stable;
         for (long long s = 0; s < steps; ++s) {
+            const auto start = std::chrono::steady_clock::now();
             model.step();
+            cell.stepSeconds +=
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
             status.steps = s + 1;
             if (const auto failure = model.failure()) {
                 status.outcome = methods::CellOutcome::Exploded;
@@ -84,7 +88,7 @@ FluidCell runFluidCell(const Preset& base, double dt, int iterations, const Flui
         cell.densityErrorMean = errorSum / static_cast<double>(steps);
         if (cell.densityErrorMean > setup.tolerance) status.outcome = methods::CellOutcome::OverCompressed;
     });
-    cell.secondsPerTime = cell.status.seconds / std::max(cell.status.steps * dt, dt);
+    cell.secondsPerTime = cell.stepSeconds / std::max(static_cast<double>(cell.status.steps) * dt, dt);
     return cell;
 }
 

@@ -21,7 +21,8 @@ struct FluidCell {
     int iterations = 0;
     double densityErrorMean = 0; // mean over steps of the mean compression after the last iteration
     double densityErrorMax = 0;  // largest compression of any particle at any step
-    double secondsPerTime = 0;   // wall time per unit of simulated time
+    double stepSeconds = 0;      // wall time of the steps (not of setting the cell up)
+    double secondsPerTime = 0;   // stepSeconds per unit of simulated time
     double maxSpeed = 0;         // largest speed seen [L/s]
     methods::CellStatus status;
 };

@@ -6,7 +6,9 @@
 #include "SimulationController.h"
 #include "pbf/PbfModel.h"
 
+#include <QComboBox>
 #include <QHBoxLayout>
+#include <QLabel>
 #include <qcustomplot.h>
 
 namespace pl::ui {
@@ -35,6 +37,15 @@ FluidPage::FluidPage(LabRunner* runner, SimulationController* controller, QWidge
     cost_ =
         lab::makePlot(this, tr("wall time per simulated second [s]"), tr("mean density error"), true, true);
     cost_->setObjectName("fluidCostPlot");
+    errorKind_ = new QComboBox(this);
+    errorKind_->addItems({tr("mean density error"), tr("max density error")});
+    connect(errorKind_, &QComboBox::currentIndexChanged, this, [this] {
+        replotCost();
+        recommend_->clear();
+    });
+    controls_->addWidget(new QLabel(tr("Error:"), this));
+    controls_->addWidget(errorKind_);
+    controls_->addStretch(1);
     auto* plots = new QHBoxLayout;
     plots->addWidget(map_);
     plots->addWidget(cost_);
@@ -62,7 +73,7 @@ void FluidPage::run() {
     cells_.clear();
     recommend_->clear();
     map_->clearGraphs();
-    cost_->clearGraphs();
+    replotCost();
     lab::addOutcomeGraphs(map_, kClasses);
     if (const auto* fluid = dynamic_cast<const PbfModel*>(currentModel("fluid")))
         lab::markCurrent(map_, fluid->parameters().dt, static_cast<double>(fluid->parameters().iterations),
@@ -72,34 +83,45 @@ void FluidPage::run() {
     map_->replot();
     std::vector<LabRunner::Job> jobs;
     const Preset base = pbf::smallDamBreak();
-    for (std::size_t k = 0; k < dts_.size(); ++k) {
-        QCPGraph* curve =
-            lab::addCurve(cost_, tr("dt = %1").arg(dts_[k]), lab::schemeColour(static_cast<int>(k)));
-        jobs.push_back([this, k, base, curve]() -> LabRunner::Show {
+    for (double dt : dts_)
+        jobs.push_back([this, dt, base]() -> LabRunner::Show {
             std::vector<pbf::FluidCell> row;
             for (int n : iterations_) {
                 if (*runner_->stopFlag()) break;
-                row.push_back(pbf::runFluidCell(base, dts_[k], n, setup_));
+                row.push_back(pbf::runFluidCell(base, dt, n, setup_));
             }
-            return [this, row, curve] {
+            return [this, row, dt] {
                 int failed = 0;
                 for (const auto& c : row) {
                     lab::addCell(map_, kClasses, c.status.outcome, c.dt, c.iterations);
-                    if (ranThrough(c) && c.densityErrorMean > 0)
-                        curve->addData(c.secondsPerTime, c.densityErrorMean);
                     failed += !ranThrough(c);
                 }
                 cells_.insert(cells_.end(), row.begin(), row.end());
                 runner_->setStatus(tr("dt = %1: %2 of %3 settings ran through")
-                                       .arg(row.empty() ? 0.0 : row.front().dt)
+                                       .arg(dt)
                                        .arg(static_cast<int>(row.size()) - failed)
                                        .arg(row.size()));
                 map_->replot();
-                lab::rescale(cost_);
+                replotCost();
             };
         });
-    }
     runner_->start(std::move(jobs), tr("Fluid sweep"));
+}
+
+double FluidPage::error(const pbf::FluidCell& c) const {
+    return errorKind_->currentIndex() == 0 ? c.densityErrorMean : c.densityErrorMax;
+}
+
+void FluidPage::replotCost() {
+    cost_->clearGraphs();
+    cost_->yAxis->setLabel(errorKind_->currentText());
+    for (std::size_t k = 0; k < dts_.size(); ++k) {
+        QCPGraph* curve =
+            lab::addCurve(cost_, tr("dt = %1").arg(dts_[k]), lab::schemeColour(static_cast<int>(k)));
+        for (const auto& c : cells_)
+            if (c.dt == dts_[k] && ranThrough(c) && error(c) > 0) curve->addData(c.secondsPerTime, error(c));
+    }
+    lab::rescale(cost_);
 }
 
 std::vector<methods::Candidate> FluidPage::candidates() const {
@@ -110,7 +132,7 @@ std::vector<methods::Candidate> FluidPage::candidates() const {
         candidate.label = "dt = " + QString::number(c.dt).toStdString() + ", " +
                           std::to_string(c.iterations) + " iterations";
         candidate.setting = {{"dt", c.dt}, {"iterations", static_cast<double>(c.iterations)}};
-        candidate.error = c.densityErrorMean;
+        candidate.error = error(c);
         candidate.cost = c.secondsPerTime;
         list.push_back(candidate);
     }

@@ -7,6 +7,7 @@
 #include "methods/Recommend.h"
 #include "pbf/FluidSweep.h"
 
+class QComboBox;
 class QCustomPlot;
 
 namespace pl::ui {
@@ -28,9 +29,12 @@ public slots:
 
 private:
     std::vector<methods::Candidate> candidates() const;
+    double error(const pbf::FluidCell& c) const;
+    void replotCost();
 
     QCustomPlot* map_ = nullptr;
     QCustomPlot* cost_ = nullptr;
+    QComboBox* errorKind_ = nullptr;
     RecommendBar* recommend_ = nullptr;
     std::vector<double> dts_{0.00125, 0.0025, 0.005, 0.01, 0.02, 0.04, 0.08};
     std::vector<int> iterations_{1, 2, 3, 5, 8, 12};

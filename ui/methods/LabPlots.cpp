@@ -47,8 +47,9 @@ void rescale(QCustomPlot* plot) {
 
 QColor schemeColour(int index) {
     static const QColor colours[] = {QColor(200, 70, 60),  QColor(230, 150, 40), QColor(60, 110, 200),
-                                     QColor(40, 150, 110), QColor(140, 80, 180), QColor(90, 90, 90)};
-    return colours[index % 6];
+                                     QColor(40, 150, 110), QColor(140, 80, 180), QColor(90, 90, 90),
+                                     QColor(30, 170, 200), QColor(170, 120, 60)};
+    return colours[index % 8];
 }
 
 QColor outcomeColour(methods::CellOutcome outcome) {
