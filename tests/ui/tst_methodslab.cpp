@@ -5,6 +5,7 @@
 #include "methods/DsmcPage.h"
 #include "methods/FluidPage.h"
 #include "methods/GasSweepPage.h"
+#include "methods/LabBatch.h"
 #include "methods/LabRunner.h"
 #include "methods/MethodsLab.h"
 #include "methods/RecommendBar.h"
@@ -200,6 +201,21 @@ private slots:
         QVERIFY(lab.relaxPage()->plot()->graph(0)->dataCount() > 10);
         QVERIFY(lab.relaxPage()->plot()->graph(1)->dataCount() > 10);
         save(lab, "methods-lab-relax.png", 5);
+    }
+
+    void batchRunWritesThePlotAndItsData() {
+        QTemporaryDir dir;
+        const QString png = dir.filePath("dsmc.png"), csv = dir.filePath("dsmc.csv");
+        QCOMPARE(runLabPage("dsmc", png, csv), QString());
+        QImage image(png);
+        QVERIFY(!image.isNull() && image.width() > 400);
+        QFile data(csv);
+        QVERIFY(data.open(QIODevice::ReadOnly));
+        const QStringList lines = QString(data.readAll()).split('\n', Qt::SkipEmptyParts);
+        QCOMPARE(lines.front(), QString("series,x,y"));
+        QCOMPARE(lines.size(), 1 + 16); // 4 ν dt × 4 particle counts
+        QVERIFY(runLabPage("nope", png, csv).startsWith("unknown page"));
+        QVERIFY(!runLabPage("echo", dir.filePath("missing/dir/echo.png"), {}).isEmpty());
     }
 
     void closingWhileRunningWaitsForTheWorker() {
