@@ -6,6 +6,7 @@
 #include "md/MdModel.h"
 #include "md/StabilityMap.h"
 #include "methods/MdVsDsmc.h"
+#include "methods/SweepGrid.h"
 #include "pbf/FluidSweep.h"
 
 #include <cmath>
@@ -25,16 +26,11 @@ std::string csvField(const std::string& text) {
     return quoted + '"';
 }
 
-std::vector<double> logSpaced(double first, double last, int count) {
-    std::vector<double> v;
-    for (int i = 0; i < count; ++i) v.push_back(first * std::pow(last / first, i / (count - 1.0)));
-    return v;
-}
-
 } // namespace
 
 int stabilityMap(const StabilityOptions& options) {
-    const std::vector<double> columns = options.omegaDt.empty() ? logSpaced(0.05, 5.0, 25) : options.omegaDt;
+    const std::vector<double> columns =
+        options.omegaDt.empty() ? methods::logSpaced(0.05, 5.0, 25) : options.omegaDt;
     md::StabilitySetup setup;
     setup.steps = options.steps;
     setup.tolerance = options.tolerance;

@@ -49,8 +49,8 @@ StabilityCell runStabilityCell(const std::string& integrator, double dt, double 
         const double heavyX = kDiameter - kPreload;
         model.placeParticles(
             {{kAmplitude, 0.0, 0.0, 0.0, 0}, {-heavyX, 0.0, 0.0, 0.0, 1}, {heavyX, 0.0, 0.0, 0.0, 1}});
-        // The springs' preload holds k δ₀² of energy that never moves; errors are relative to the
-        // oscillation's k A².
+        // The springs' preload holds k m δ₀² of energy that never moves; errors are relative to the
+        // oscillation's k m A².
         const double resting = stiffness * kMass * kPreload * kPreload;
         const double e0 = model.totalEnergy() - resting;
         status.outcome = methods::CellOutcome::Stable;

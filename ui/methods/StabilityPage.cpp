@@ -3,6 +3,7 @@
 #include "LabPlots.h"
 #include "LabRunner.h"
 #include "md/MdModel.h"
+#include "methods/SweepGrid.h"
 
 #include <QComboBox>
 #include <QLabel>
@@ -16,11 +17,6 @@ const std::vector<methods::CellOutcome> kClasses{
     methods::CellOutcome::Stable, methods::CellOutcome::Inaccurate, methods::CellOutcome::Unstable,
     methods::CellOutcome::Rejected};
 
-std::vector<double> logSpaced(double first, double last, int count) {
-    std::vector<double> v;
-    for (int i = 0; i < count; ++i) v.push_back(first * std::pow(last / first, i / (count - 1.0)));
-    return v;
-}
 } // namespace
 
 StabilityPage::StabilityPage(LabRunner* runner, SimulationController* controller, QWidget* parent)
@@ -31,7 +27,8 @@ StabilityPage::StabilityPage(LabRunner* runner, SimulationController* controller
              "1 %) or unstable (its energy grew 50×). The line is the linear theory's limit: ω dt = 2 for "
              "Verlet and symplectic Euler, 2√2 for RK4, 1.57 for Forest–Ruth; explicit Euler has none."),
           parent),
-      stiffness_(logSpaced(std::pow(10.0, 1.5), std::pow(10.0, 5.5), 9)), dts_(logSpaced(6e-5, 0.6, 26)) {
+      stiffness_(methods::logSpaced(std::pow(10.0, 1.5), std::pow(10.0, 5.5), 9)),
+      dts_(methods::logSpaced(6e-5, 0.6, 26)) {
     integrator_ = new QComboBox(this);
     integrator_->addItems({"velocity-verlet", "symplectic-euler", "explicit-euler", "rk4", "forest-ruth"});
     controls_->addWidget(new QLabel(tr("Integrator:"), this));
@@ -60,7 +57,7 @@ void StabilityPage::drawFrame(const std::string& integrator) {
         QCPGraph* line = plot_->addGraph();
         line->setName(tr("linear limit ω dt = %1").arg(limit, 0, 'g', 4));
         line->setPen(QPen(Qt::black, 2, Qt::DashLine));
-        for (double k : logSpaced(stiffness_.front(), stiffness_.back(), 20))
+        for (double k : methods::logSpaced(stiffness_.front(), stiffness_.back(), 20))
             line->addData(limit / md::cagedOmega(k), k);
     }
     if (const auto* gas = dynamic_cast<const MdModel*>(currentModel("gas"))) {
