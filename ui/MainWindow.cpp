@@ -120,7 +120,7 @@ void MainWindow::createDocks() {
     QDockWidget* lab = addDock(new MethodsLab(this, controller_), tr("Methods lab"), "methodsLabDock",
                                Qt::RightDockWidgetArea);
     lab->setFloating(true);
-    lab->resize(760, 600);
+    lab->resize(920, 680);
     lab->hide();
 }
 

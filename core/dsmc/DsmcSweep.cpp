@@ -3,7 +3,6 @@
 
 #include "DsmcModel.h"
 
-#include <chrono>
 #include <cmath>
 #include <stdexcept>
 
@@ -36,9 +35,7 @@ DsmcCell runDsmcCell(const Preset& base, long long particles, double nuDt, const
         double sum = 0;
         status.outcome = methods::CellOutcome::Stable;
         for (long long s = 0; s < steps; ++s) {
-            const auto start = std::chrono::steady_clock::now();
-            model.step();
-            cell.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+            cell.seconds += methods::secondsOf([&] { model.step(); });
             status.steps = s + 1;
             if (const auto failure = model.failure()) {
                 status.outcome = methods::CellOutcome::Unstable;

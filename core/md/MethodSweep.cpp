@@ -3,6 +3,7 @@
 
 #include "MdKernels.h"
 #include "MdModel.h"
+#include "methods/CellOutcome.h"
 
 #include <algorithm>
 #include <chrono>
@@ -148,9 +149,7 @@ SweepPoint sweepFromState(const GasReference& reference, const std::string& inte
     const auto steps = std::max<long long>(1, std::llround(reference.horizon / dt));
     double seconds = 0; // the steps only, not the energy checks between them
     for (long long k = 0; k < steps; ++k) {
-        const auto start = std::chrono::steady_clock::now();
-        model->step();
-        seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        seconds += methods::secondsOf([&] { model->step(); });
         if (model->failure()) {
             p.failure = model->failure()->message();
             break;

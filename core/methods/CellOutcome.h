@@ -37,6 +37,13 @@ inline const char* outcomeName(CellOutcome outcome) {
     return "?";
 }
 
+// Wall time of body() in seconds: a sweep times its steps only, not its set-up or its measurements.
+template <class Body> double secondsOf(Body&& body) {
+    const auto start = std::chrono::steady_clock::now();
+    body();
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
 // What every cell reports besides its own measurements.
 struct CellStatus {
     CellOutcome outcome = CellOutcome::Rejected;
@@ -49,20 +56,20 @@ struct CellStatus {
 // outcome and steps; the runner times it.
 template <class Body> CellStatus runIsolated(Body&& body) {
     CellStatus status;
-    const auto start = std::chrono::steady_clock::now();
-    try {
-        body(status);
-    } catch (const std::bad_alloc&) {
-        status.outcome = CellOutcome::Rejected;
-        status.detail = "not enough memory for this cell";
-    } catch (const std::exception& e) {
-        status.outcome = CellOutcome::Rejected;
-        status.detail = e.what();
-    } catch (...) {
-        status.outcome = CellOutcome::Rejected;
-        status.detail = "an unknown error stopped this cell";
-    }
-    status.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    status.seconds = secondsOf([&] {
+        try {
+            body(status);
+        } catch (const std::bad_alloc&) {
+            status.outcome = CellOutcome::Rejected;
+            status.detail = "not enough memory for this cell";
+        } catch (const std::exception& e) {
+            status.outcome = CellOutcome::Rejected;
+            status.detail = e.what();
+        } catch (...) {
+            status.outcome = CellOutcome::Rejected;
+            status.detail = "an unknown error stopped this cell";
+        }
+    });
     return status;
 }
 

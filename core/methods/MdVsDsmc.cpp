@@ -1,12 +1,12 @@
 // The two relaxations of the methods lab's MD-vs-DSMC comparison, each through its model's own code.
 #include "MdVsDsmc.h"
 
+#include "CellOutcome.h"
 #include "common/Philox.h"
 #include "common/Statistics.h"
 #include "dsmc/DsmcModel.h"
 #include "md/MdModel.h"
 
-#include <chrono>
 #include <cmath>
 #include <memory>
 #include <numbers>
@@ -46,11 +46,6 @@ std::unique_ptr<DsmcModel> twoBeamCell(const TwoBeamSetup& setup) {
     preset.params = dsmcParams(setup);
     model->reset(preset);
     return model;
-}
-
-using Clock = std::chrono::steady_clock;
-double since(Clock::time_point start) {
-    return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
 } // namespace
@@ -96,9 +91,7 @@ RelaxationRun relaxWithDsmc(const TwoBeamSetup& setup,
     };
     emit(cell->observe());
     while (run.curve.back().collisionsPerParticle < setup.collisionsPerParticle && !(stop && *stop)) {
-        const auto start = Clock::now();
-        cell->step();
-        run.seconds += since(start);
+        run.seconds += secondsOf([&] { cell->step(); });
         ++run.steps;
         if (cell->failure()) throw std::runtime_error("DSMC: " + cell->failure()->message());
         emit(cell->observe());
@@ -167,9 +160,9 @@ RelaxationRun relaxWithMd(const TwoBeamSetup& setup,
     const double freeTime = 1.0 / (std::sqrt(2.0) * count * diameter);
     const auto chunk = std::max<long long>(1, std::llround(0.05 * freeTime * omega / setup.omegaDt));
     while (collisions < setup.collisionsPerParticle && !(stop && *stop)) {
-        const auto start = Clock::now();
-        for (long long s = 0; s < chunk; ++s) model.step();
-        run.seconds += since(start);
+        run.seconds += secondsOf([&] {
+            for (long long s = 0; s < chunk; ++s) model.step();
+        });
         run.steps += chunk;
         if (model.failure()) throw std::runtime_error("MD: " + model.failure()->message());
         const MdObservables o = model.observe(); // its rate counts contacts since the last observe()

@@ -4,7 +4,6 @@
 #include "PbfModel.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 
 namespace pl::pbf {
@@ -53,10 +52,7 @@ FluidCell runFluidCell(const Preset& base, double dt, int iterations, const Flui
         double errorSum = 0;
         status.outcome = methods::CellOutcome::Stable;
         for (long long s = 0; s < steps; ++s) {
-            const auto start = std::chrono::steady_clock::now();
-            model.step();
-            cell.stepSeconds +=
-                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+            cell.stepSeconds += methods::secondsOf([&] { model.step(); });
             status.steps = s + 1;
             if (const auto failure = model.failure()) {
                 status.outcome = methods::CellOutcome::Exploded;
