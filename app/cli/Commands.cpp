@@ -191,17 +191,7 @@ md::SweepResult sweepFromPreset(const SweepOptions& options) {
     const double horizon = options.horizon > 0 ? options.horizon : 64 * std::abs(gas.parameters().dt);
     const int finest = *std::max_element(options.steps.begin(), options.steps.end());
     const md::GasReference reference = md::gasReference(gas, horizon, horizon / (8.0 * finest));
-    md::SweepResult result;
-    for (const auto& name : options.integrators) {
-        std::vector<double> dts, errors;
-        for (int steps : options.steps) {
-            result.points.push_back(md::sweepFromState(reference, name, horizon / steps));
-            dts.push_back(result.points.back().dt);
-            errors.push_back(result.points.back().trajectoryError);
-        }
-        result.orders.push_back({name, md::fitOrder(dts, errors), md::theoreticalOrder(name)});
-    }
-    return result;
+    return md::sweepFromReference(reference, options.integrators, options.steps);
 }
 
 int integratorSweep(const SweepOptions& options) {

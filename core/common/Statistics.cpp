@@ -4,6 +4,7 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace pl {
@@ -65,6 +66,21 @@ double ksTwoSamplePValue(double distance, double na, double nb) {
         sign = -sign;
     }
     return std::clamp(2.0 * sum, 0.0, 1.0);
+}
+
+double kurtosis(const std::vector<double>& values) {
+    double mean = 0;
+    for (double v : values) mean += v;
+    mean /= static_cast<double>(values.size());
+    double m2 = 0, m4 = 0;
+    for (double v : values) {
+        const double d2 = (v - mean) * (v - mean);
+        m2 += d2;
+        m4 += d2 * d2;
+    }
+    m2 /= static_cast<double>(values.size());
+    m4 /= static_cast<double>(values.size());
+    return m2 > 0 ? m4 / (m2 * m2) : std::numeric_limits<double>::quiet_NaN();
 }
 
 PowerLawFit fitPowerLaw(const std::vector<double>& x, const std::vector<double>& y) {

@@ -25,6 +25,10 @@ double ksTwoSampleDistance(std::vector<double>& a, std::vector<double>& b);
 // (Stephens 1970).
 double ksTwoSamplePValue(double distance, double na, double nb);
 
+// Kurtosis ⟨(x − x̄)⁴⟩ / ⟨(x − x̄)²⟩² of a sample: 3 for a Gaussian, 1 for two equal spikes. NaN when all
+// values are equal.
+double kurtosis(const std::vector<double>& values);
+
 struct PowerLawFit {
     double exponent = 0.0;  // p in y = c x^p
     double prefactor = 0.0; // c

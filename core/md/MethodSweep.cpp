@@ -119,24 +119,50 @@ void positionsByDisk(const MdModel& model, std::vector<double>& x, std::vector<d
 
 } // namespace
 
-GasReference gasReference(const MdModel& source, double horizon, double referenceDt) {
-    if (!(horizon > 0) || !(referenceDt > 0) || referenceDt > horizon)
-        throw std::invalid_argument("the reference needs 0 < dt ≤ horizon");
+GasReference captureGas(const MdModel& source) {
     GasReference reference;
     reference.preset = source.toPreset();
-    reference.horizon = horizon;
-    reference.referenceDt = referenceDt;
     const MdState& s = source.state();
     for (std::size_t i = 0; i < s.size(); ++i)
         reference.start.push_back({s.x[i], s.y[i], s.vx[i], s.vy[i], s.species[i]});
+    return reference;
+}
+
+GasReference gasReference(const MdModel& source, double horizon, double referenceDt) {
+    GasReference reference = captureGas(source);
+    runReference(reference, horizon, referenceDt);
+    return reference;
+}
+
+void runReference(GasReference& reference, double horizon, double referenceDt) {
+    if (!(horizon > 0) || !(referenceDt > 0) || referenceDt > horizon)
+        throw std::invalid_argument("the reference needs 0 < dt ≤ horizon");
     if (reference.start.empty()) throw std::invalid_argument("the gas has no disks to follow");
+    reference.horizon = horizon;
+    reference.referenceDt = referenceDt;
     auto model = startFrom(reference, "forest-ruth", referenceDt);
     const auto steps = std::llround(horizon / referenceDt);
     for (long long k = 0; k < steps; ++k) model->step();
     if (model->failure())
         throw std::runtime_error("the reference run failed: " + model->failure()->message());
     positionsByDisk(*model, reference.x, reference.y);
-    return reference;
+}
+
+SweepResult sweepFromReference(const GasReference& reference, const std::vector<std::string>& integrators,
+                               const std::vector<int>& stepsList) {
+    if (reference.x.empty()) throw std::invalid_argument("the reference run has not been made");
+    SweepResult result;
+    for (const auto& name : integrators) {
+        std::vector<double> dts, errors;
+        for (int steps : stepsList) {
+            if (steps < 1) throw std::invalid_argument("steps per horizon must be positive");
+            result.points.push_back(sweepFromState(reference, name, reference.horizon / steps));
+            dts.push_back(result.points.back().dt);
+            errors.push_back(result.points.back().trajectoryError);
+        }
+        result.orders.push_back({name, fitOrder(dts, errors), theoreticalOrder(name)});
+    }
+    return result;
 }
 
 SweepPoint sweepFromState(const GasReference& reference, const std::string& integrator, double dt) {

@@ -57,12 +57,21 @@ struct GasReference {
     std::vector<double> x, y; // reference positions at the horizon, by disk (start order)
 };
 
-// horizon: simulated time, short enough that chaos has not yet amplified round-off (a few dozen of the
-// user's steps). The reference runs at referenceDt; both are positive whatever the sign of the gas's dt.
+// The gas as it is now (parameters, obstacles, particles): cheap, so a UI takes it on its own thread
+// while the gas runs on, and hands it to a worker for the reference run.
+GasReference captureGas(const MdModel& source);
+// Runs the reference: horizon is simulated time, short enough that chaos has not yet amplified
+// round-off (a few dozen of the user's steps); referenceDt its step. Both positive whatever the sign
+// of the gas's dt.
+void runReference(GasReference& reference, double horizon, double referenceDt);
+// captureGas, then runReference.
 GasReference gasReference(const MdModel& source, double horizon, double referenceDt);
 // One point of the sweep from the user's gas: rms position error against the reference at the horizon,
 // max relative energy error, cost. A blow-up fills failure instead of throwing.
 SweepPoint sweepFromState(const GasReference& reference, const std::string& integrator, double dt);
+// Each integrator at dt = horizon / steps for each of stepsList, with its measured order.
+SweepResult sweepFromReference(const GasReference& reference, const std::vector<std::string>& integrators,
+                               const std::vector<int>& stepsList);
 
 // Slope of log(error) against log(dt), fitted over the points whose error is above noiseFloor.
 double fitOrder(const std::vector<double>& dts, const std::vector<double>& errors, double noiseFloor = 1e-12);

@@ -58,21 +58,6 @@ std::vector<std::pair<double, double>> twoBeamVelocities(const TwoBeamSetup& set
     return v;
 }
 
-double kurtosis(const std::vector<double>& values) {
-    double mean = 0;
-    for (double v : values) mean += v;
-    mean /= static_cast<double>(values.size());
-    double m2 = 0, m4 = 0;
-    for (double v : values) {
-        const double d2 = (v - mean) * (v - mean);
-        m2 += d2;
-        m4 += d2 * d2;
-    }
-    m2 /= static_cast<double>(values.size());
-    m4 /= static_cast<double>(values.size());
-    return m2 > 0 ? m4 / (m2 * m2) : std::nan("");
-}
-
 RelaxationRun relaxWithDsmc(const TwoBeamSetup& setup,
                             const std::function<void(const RelaxationSample&)>& onSample,
                             const std::atomic<bool>* stop) {

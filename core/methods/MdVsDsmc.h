@@ -46,9 +46,6 @@ struct MdVsDsmcResult {
 // along x, each beam Maxwellian at beamKT, with zero total momentum.
 std::vector<std::pair<double, double>> twoBeamVelocities(const TwoBeamSetup& setup);
 
-// Kurtosis of the x components about their mean.
-double kurtosis(const std::vector<double>& values);
-
 // Each run reports its samples through onSample (may be empty); a true stop ends it early.
 RelaxationRun relaxWithMd(const TwoBeamSetup& setup,
                           const std::function<void(const RelaxationSample&)>& onSample = {},

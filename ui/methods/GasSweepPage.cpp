@@ -82,21 +82,15 @@ double GasSweepPage::cost(const md::SweepPoint& p) const {
 void GasSweepPage::run() {
     if (runner_->isRunning()) return; // its queued points still draw into this page
     const Source source = source_->currentIndex() == 0 ? Source::HarmonicPair : Source::CurrentGas;
-    std::shared_ptr<MdModel> snapshot;
+    auto reference = std::make_shared<md::GasReference>();
     if (source == Source::CurrentGas) {
         const auto* gas = dynamic_cast<const MdModel*>(currentModel("gas"));
         if (!gas || gas->particleCount() == 0) {
             runner_->setStatus(tr("Load a gas experiment with disks first, or sweep the harmonic pair."));
             return;
         }
-        // The gas runs on in this thread: the worker gets a copy of it as it is now.
-        snapshot = std::make_shared<MdModel>();
-        snapshot->reset(gas->toPreset());
-        std::vector<MdParticle> particles;
-        const MdState& s = gas->state();
-        for (std::size_t i = 0; i < s.size(); ++i)
-            particles.push_back({s.x[i], s.y[i], s.vx[i], s.vy[i], s.species[i]});
-        snapshot->placeParticles(particles);
+        // The gas runs on in this thread: the worker gets its state as it is now.
+        *reference = md::captureGas(*gas);
         currentIntegrator_ = gas->parameters().integrator;
         currentDt_ = gas->parameters().dt;
     }
@@ -106,29 +100,18 @@ void GasSweepPage::run() {
     recommend_->clear();
     replot();
     std::vector<LabRunner::Job> jobs;
-    auto reference = std::make_shared<md::GasReference>();
-    if (snapshot) {
+    if (source == Source::CurrentGas) {
         const double horizon = kHorizonSteps * std::abs(currentDt_);
-        jobs.push_back([snapshot, reference, horizon, this]() -> LabRunner::Show {
-            *reference = md::gasReference(*snapshot, horizon, horizon / kReferenceSteps);
+        jobs.push_back([reference, horizon, this]() -> LabRunner::Show {
+            md::runReference(*reference, horizon, horizon / kReferenceSteps);
             return [this] { runner_->setStatus(tr("Reference run done; sweeping the integrators…")); };
         });
     }
     for (const std::string& name : kSchemes)
         jobs.push_back([this, name, reference, source, steps = pairSteps_]() -> LabRunner::Show {
-            md::SweepResult r;
-            if (source == Source::HarmonicPair) {
-                r = md::sweepHarmonicPair({name}, steps);
-            } else {
-                if (reference->start.empty()) throw std::runtime_error("the reference run did not finish");
-                std::vector<double> dts, errors;
-                for (int n : kGasSteps) {
-                    r.points.push_back(md::sweepFromState(*reference, name, reference->horizon / n));
-                    dts.push_back(r.points.back().dt);
-                    errors.push_back(r.points.back().trajectoryError);
-                }
-                r.orders.push_back({name, md::fitOrder(dts, errors), md::theoreticalOrder(name)});
-            }
+            const md::SweepResult r = source == Source::HarmonicPair
+                                          ? md::sweepHarmonicPair({name}, steps)
+                                          : md::sweepFromReference(*reference, {name}, kGasSteps);
             return [this, r] {
                 points_.insert(points_.end(), r.points.begin(), r.points.end());
                 orders_.insert(orders_.end(), r.orders.begin(), r.orders.end());

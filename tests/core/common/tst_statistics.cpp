@@ -63,6 +63,12 @@ private slots:
         QVERIFY(ksTwoSamplePValue(ksTwoSampleDistance(x2, z), 2000, 2000) < 1e-6);
     }
 
+    void kurtosisOfKnownSamples() {
+        QCOMPARE(kurtosis({-1, 1, -1, 1}), 1.0);            // two spikes
+        QCOMPARE(kurtosis({-2, 0, 0, 0, 0, 0, 0, 2}), 4.0); // ⟨x⁴⟩ = 4, ⟨x²⟩ = 1
+        QVERIFY(std::isnan(kurtosis({5, 5, 5})));
+    }
+
     void powerLawFitRecoversExponent() {
         std::vector<double> x{0.1, 0.05, 0.025, 0.0125}, y;
         for (double h : x) y.push_back(3.0 * h * h * h * h);

@@ -1,5 +1,6 @@
 // MD against planar DSMC: from the same two beams both relax to one Maxwellian (two-sample KS), the
 // kurtosis of v_x climbs from about 1 to 3 in a few collisions per particle, and DSMC needs far less time.
+#include "common/Statistics.h"
 #include "methods/MdVsDsmc.h"
 
 #include <QtTest>
@@ -24,7 +25,7 @@ private slots:
         QVERIFY(std::abs(px) < 1e-9 && std::abs(py) < 1e-9);
         // ½ u² of drift plus kT per particle in two components.
         QVERIFY(std::abs(energy / 2000 - (0.5 + setup.beamKT)) < 1e-9);
-        QVERIFY(kurtosis(vx) < 1.1); // two narrow peaks at ±1
+        QVERIFY(pl::kurtosis(vx) < 1.1); // two narrow peaks at ±1
     }
 
     void bothEndAtTheSameMaxwellian() {
