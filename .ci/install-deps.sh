@@ -8,12 +8,16 @@ packages=(
   cmake g++ make pkg-config ca-certificates
   # Qt 6 widgets, OpenGL widgets, SVG, test; QCustomPlot's Qt 6 build
   qt6-base-dev libqt6opengl6-dev qt6-svg-dev libqcustomplot-dev
+  # Qt Linguist: lupdate/lrelease, their CMake functions, and Qt's own strings in other languages
+  qt6-l10n-tools qt6-tools-dev qt6-translations-l10n
   # numerics, JSON, command line
   libeigen3-dev nlohmann-json3-dev libcli11-dev
   # OpenGL loading and headless contexts; Mesa's software renderer
   libepoxy-dev libegl-dev libgl1-mesa-dri libegl-mesa0 libglx-mesa0
   # an X server for the GUI tests; the style check
   xvfb xauth clang-format
+  # LAMMPS (its binary is lmp) and Open MPI's mpirun: the scale-out agreement tests (docs/scale-out.md)
+  lammps openmpi-bin
 )
 
 missing=()

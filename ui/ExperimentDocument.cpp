@@ -4,6 +4,7 @@
 
 #include "SimulationController.h"
 #include "catalog/ModelCatalog.h"
+#include "common/AtomicFile.h"
 
 #include <QDir>
 #include <QFileDialog>
@@ -30,17 +31,55 @@ void ExperimentDocument::showError(const QString& what, const QString& message) 
 
 bool ExperimentDocument::open(const QString& nameOrPath, bool force) {
     if (!force && !maybeSave()) return false;
-    Preset preset;
+    Snapshot snapshot;
+    const bool isSnapshot = isSnapshotFile(nameOrPath.toStdString());
     try {
-        preset = loadPreset(nameOrPath.toStdString());
+        if (isSnapshot)
+            snapshot = readSnapshotFile(nameOrPath.toStdString(), specsForModel);
+        else
+            snapshot.preset = loadPreset(nameOrPath.toStdString());
     } catch (const std::exception& e) {
         showError(tr("Cannot open preset"), QString::fromUtf8(e.what()));
         return false;
     }
+    const Preset& preset = snapshot.preset;
     const bool isFile = QFileInfo::exists(nameOrPath) && !QFileInfo(nameOrPath).isDir();
     const QString label =
         preset.name.empty() ? QFileInfo(nameOrPath).completeBaseName() : QString::fromStdString(preset.name);
-    return adopt(preset, isFile ? QFileInfo(nameOrPath).absoluteFilePath() : QString(), label);
+    if (!adopt(preset, isFile ? QFileInfo(nameOrPath).absoluteFilePath() : QString(), label,
+               isSnapshot ? &snapshot.state : nullptr))
+        return false;
+    snapshotFile_ = isSnapshot;
+    return true;
+}
+
+bool ExperimentDocument::restore(const Snapshot& snapshot) {
+    const QString label =
+        snapshot.preset.name.empty() ? tr("restored") : QString::fromStdString(snapshot.preset.name);
+    if (!adopt(snapshot.preset, {}, label, &snapshot.state)) return false;
+    setModified(true); // it lives in no file of the user's yet
+    return true;
+}
+
+bool ExperimentDocument::saveSnapshotTo(const QString& path) {
+    const Model* model = controller_->model();
+    if (!model) return false;
+    try {
+        Snapshot snapshot = takeSnapshot(*model);
+        snapshot.preset.name = QFileInfo(path).completeBaseName().toStdString();
+        snapshot.preset.description = meta_.description;
+        writeFileAtomically(path.toStdString(), serializeSnapshot(snapshot, model->paramSpecs()));
+    } catch (const std::exception& e) {
+        showError(tr("Cannot save snapshot"), QString::fromUtf8(e.what()));
+        return false;
+    }
+    path_ = QFileInfo(path).absoluteFilePath();
+    label_ = QFileInfo(path).completeBaseName();
+    snapshotFile_ = true;
+    modified_ = false;
+    addRecent(path_);
+    emit changed();
+    return true;
 }
 
 bool ExperimentDocument::newExperiment(const std::string& kind) {
@@ -56,8 +95,9 @@ bool ExperimentDocument::newExperiment(const std::string& kind) {
     return adopt(preset, {}, tr("untitled"));
 }
 
-bool ExperimentDocument::adopt(const Preset& preset, const QString& path, const QString& label) {
-    const QString error = controller_->load(preset);
+bool ExperimentDocument::adopt(const Preset& preset, const QString& path, const QString& label,
+                               const StateRecord* state) {
+    const QString error = controller_->load(preset, state);
     if (!error.isEmpty()) {
         showError(tr("Cannot open preset"), error);
         return false;
@@ -66,13 +106,24 @@ bool ExperimentDocument::adopt(const Preset& preset, const QString& path, const 
     path_ = path;
     label_ = label;
     modified_ = false;
+    snapshotFile_ = false;
     if (!path.isEmpty()) addRecent(path);
     emit changed();
     return true;
 }
 
+void ExperimentDocument::adoptImported(const Preset& preset, const QString& label) {
+    meta_ = preset;
+    path_.clear();
+    label_ = label;
+    modified_ = false;
+    snapshotFile_ = false;
+    emit changed();
+}
+
 bool ExperimentDocument::save() {
-    return path_.isEmpty() ? saveAs() : saveTo(path_);
+    if (path_.isEmpty()) return saveAs();
+    return snapshotFile_ ? saveSnapshotTo(path_) : saveTo(path_);
 }
 
 bool ExperimentDocument::saveAs() {
@@ -98,6 +149,7 @@ bool ExperimentDocument::saveTo(const QString& path) {
     meta_ = preset;
     path_ = QFileInfo(path).absoluteFilePath();
     label_ = QString::fromStdString(preset.name);
+    snapshotFile_ = false;
     modified_ = false;
     addRecent(path_);
     emit changed();

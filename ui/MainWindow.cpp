@@ -2,11 +2,15 @@
 #include "MainWindow.h"
 #include "methods/MethodsLab.h"
 
+#include "Autosave.h"
 #include "ExperimentDocument.h"
+#include "ShortcutGuard.h"
 #include "SimulationController.h"
+#include "ViewportRoom.h"
 #include "panels/ParameterPanel.h"
 #include "plots/DistributionPlot.h"
 #include "plots/SeriesPlotSpecs.h"
+#include "present/PresentMode.h"
 #include "viewport/GLViewport.h"
 #include "viewport/SoftwareViewport.h"
 #include "viewport/ViewportCore.h"
@@ -31,6 +35,8 @@ namespace pl::ui {
 namespace {
 constexpr double kProjectorFontScale = 1.6;
 constexpr int kStatusIntervalMs = 250;
+// Small enough that at 1024 px the plots leave the viewport its room; axes and legends still fit.
+constexpr QSize kPlotMinimum(280, 200);
 } // namespace
 
 MainWindow::MainWindow(QWidget* parent)
@@ -61,7 +67,19 @@ MainWindow::MainWindow(QWidget* parent)
     const auto showMessage = [this](const QString& message) { statusBar()->showMessage(message, 6000); };
     connect(viewportCore_, &ViewportCore::statusMessage, this, showMessage);
     connect(controller_, &SimulationController::notice, this, showMessage);
+    // After the window's own modelReplaced handler, so a scene change while presenting hides its docks.
+    present_ = new PresentMode(this, controller_, viewport_);
+    connect(present_, &PresentMode::activeChanged, presentAction_, [this](bool on) {
+        const QSignalBlocker block(presentAction_);
+        presentAction_->setChecked(on);
+    });
+    connect(present_, &PresentMode::toolRequested, this,
+            [this](ViewportTool tool) { tools_->actions().at(static_cast<int>(tool))->trigger(); });
+    room_ = new ViewportRoom(this);
+    autosave_ = new Autosave(controller_, document_, this);
     readSettings();
+    new ShortcutGuard(this, viewport_); // the shortcuts act whatever has focus, except while typing
+    viewport_->setFocus(Qt::OtherFocusReason);
 }
 
 void MainWindow::createViewport() {
@@ -95,18 +113,18 @@ void MainWindow::createDocks() {
     parameters_->setMinimumWidth(280);
     addDock(parameters_, tr("Parameters"), "parametersDock", Qt::LeftDockWidgetArea);
     histogram_ = new DistributionPlot(controller_, "speedHistogram", "speed", this);
-    histogram_->setMinimumSize(340, 240);
+    histogram_->setMinimumSize(kPlotMinimum);
     QDockWidget* speed = addDock(histogram_, tr("Speed distribution"), "speedHistogramDock",
                                  Qt::RightDockWidgetArea, {"gas", "dsmc"});
     auto* vx = new DistributionPlot(controller_, "vxHistogram", "vx", this);
-    vx->setMinimumSize(340, 240);
+    vx->setMinimumSize(kPlotMinimum);
     tabifyDockWidget(
         speed, addDock(vx, tr("v_x distribution"), "vxHistogramDock", Qt::RightDockWidgetArea, {"dsmc"}));
     speed->raise();
     QDockWidget* previous = nullptr;
     for (const SeriesPlotSpec& spec : seriesPlotSpecs()) {
         auto* plot = new SeriesPlot(controller_, spec, this);
-        plot->setMinimumSize(340, 240);
+        plot->setMinimumSize(kPlotMinimum);
         seriesPlots_.push_back(plot);
         QDockWidget* dock =
             addDock(plot, spec.title, spec.objectName + "Dock", Qt::RightDockWidgetArea, spec.kinds);
@@ -148,6 +166,11 @@ void MainWindow::modelChanged() {
         }
     tools_->setEnabled(controller_->model()->tools() != nullptr);
     heat_->setEnabled(controller_->model()->tools() != nullptr);
+    // An imported run is shown, not run: what would change it is off until a preset is opened.
+    const bool ours = !controller_->isReadOnly();
+    for (QAction* action : std::as_const(runActions_)) action->setEnabled(ours);
+    speed_->setEnabled(ours);
+    parameters_->setEnabled(ours);
     viewportCore_->zoomToFit();
     updateStatus();
 }
@@ -188,13 +211,23 @@ QString MainWindow::saveViewportImage(const QString& path) {
 void MainWindow::setProjectorMode(bool on) {
     QFont font = baseFont_;
     if (on) font.setPointSizeF(baseFont_.pointSizeF() * kProjectorFontScale);
-    QApplication::setFont(font);
+    room_->keepWidthAcross([&font] { QApplication::setFont(font); }); // larger text, not a smaller view
     projectorAction_->setChecked(on);
 }
 
 void MainWindow::updateStatus() {
     const Model* model = controller_->model();
     if (!model) return;
+    if (controller_->isReadOnly()) {
+        status_->setText(tr("%1, read-only: %2 particles, %3 rows up to t = %4, step %5. Open a preset to "
+                            "simulate again.")
+                             .arg(controller_->importedFrom())
+                             .arg(model->particleCount())
+                             .arg(controller_->series()->rows())
+                             .arg(model->time(), 0, 'g', 6)
+                             .arg(model->stepCount()));
+        return;
+    }
     status_->setText(tr("%1 particles   t = %2   step %3   %4 steps/s   %5 fps   %6")
                          .arg(model->particleCount())
                          .arg(model->time(), 0, 'g', 6)
@@ -235,6 +268,7 @@ void MainWindow::closeEvent(QCloseEvent* event) {
     // Docks hidden only because this scene lacks their data count as shown for the next start.
     for (QDockWidget* dock : std::as_const(hiddenForScene_)) dock->show();
     writeSettings();
+    autosave_->discard(); // a clean exit: nothing to restore next time
     event->accept();
 }
 

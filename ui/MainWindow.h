@@ -22,6 +22,9 @@ class ParameterPanel;
 class SeriesPlot;
 class SimulationController;
 class ViewportCore;
+class PresentMode;
+class Autosave;
+class ViewportRoom;
 
 class MainWindow : public QMainWindow {
     Q_OBJECT
@@ -43,6 +46,21 @@ public:
     QImage windowImage();
     QString saveViewportImage(const QString& path); // error sentence, or empty
     void setProjectorMode(bool on);
+    // Present mode: full screen, the viewport and one panel for a lesson (ui/present/PresentMode.h).
+    PresentMode* presentMode() const { return present_; }
+    Autosave* autosave() const { return autosave_; }
+    // File → Export to LAMMPS… and File → Open LAMMPS run… once the folder is chosen (docs/scale-out.md):
+    // the reason it did not work, or empty. A refused export writes nothing; an opened run is shown
+    // read-only until a preset is opened.
+    QString exportToLammps(const QString& dir);
+    QString openLammpsRun(const QString& dir);
+    // Simulation → Run on LAMMPS… once the folder and ranks are chosen: exports there, runs
+    // `mpirun -np ranks lmp` in a worker thread under a progress dialog with Cancel, and opens the run
+    // when it ends well (lammpsRunFinished says how it ended). The reason it could not start, or empty.
+    QString runOnLammps(const QString& dir, int ranks);
+
+signals:
+    void lammpsRunFinished(const QString& problem); // empty when the run opened
 
 protected:
     void closeEvent(QCloseEvent* event) override;
@@ -50,6 +68,9 @@ protected:
 private:
     void createViewport();
     void createActions();
+    void createLammpsActions(QMenu* file);
+    void createRunOnLammpsAction(QMenu* sim);
+    QString writeLammpsDeck(const QString& dir, long long& steps); // exportToLammps; steps: the deck's run
     void createSceneBar();
     void createToolPalette();
     void syncGravity(); // the gravity action follows the model's "gravity" switch
@@ -80,7 +101,12 @@ private:
     QAction* gravity_ = nullptr;
     QLabel* status_ = nullptr;
     QAction* playAction_ = nullptr;
+    QList<QAction*> runActions_; // play, step, reset, speed: off while an imported run is shown
     QAction* projectorAction_ = nullptr;
+    QAction* presentAction_ = nullptr;
+    PresentMode* present_ = nullptr;
+    Autosave* autosave_ = nullptr;
+    ViewportRoom* room_ = nullptr; // docks give the viewport its room back (fonts, restored layouts)
     QActionGroup* tools_ = nullptr;
     QSet<QDockWidget*> hiddenForScene_; // docks hidden because the scene has no data for them
     QFont baseFont_;

@@ -1,15 +1,19 @@
 // MainWindow's actions, menus and tool bars. Every toolbar action has a shortcut and a tooltip.
 #include "ExperimentDocument.h"
 #include "MainWindow.h"
+#include "PreferencesDialog.h"
 #include "SimulationController.h"
 #include "catalog/ModelCatalog.h"
 #include "gpu/BenchmarkDialog.h"
+#include "i18n/Translations.h"
+#include "present/PresentMode.h"
 #include "viewport/ViewportCore.h"
 #include <QSettings>
 
 #include <QActionGroup>
 #include <QApplication>
 #include <QComboBox>
+#include <QDir>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QLabel>
@@ -40,7 +44,7 @@ void MainWindow::createActions() {
     QMenu* file = menuBar()->addMenu(tr("&File"));
     QMenu* newMenu = file->addMenu(tr("&New experiment"));
     for (const ModelInfo& info : modelCatalog()) {
-        QAction* action = newMenu->addAction(QString::fromStdString(info.title));
+        QAction* action = newMenu->addAction(coreText(info.title));
         connect(action, &QAction::triggered, this,
                 [this, kind = info.kind] { document_->newExperiment(kind); });
     }
@@ -49,7 +53,7 @@ void MainWindow::createActions() {
             &QAction::triggered, this, [this] {
                 const QString path = QFileDialog::getOpenFileName(this, tr("Open preset"),
                                                                   ExperimentDocument::userPresetDirectory(),
-                                                                  tr("Presets (*.json)"));
+                                                                  tr("Presets and snapshots (*.json)"));
                 if (!path.isEmpty()) document_->open(path);
             });
     recentMenu_ = file->addMenu(tr("Open &recent"));
@@ -59,6 +63,17 @@ void MainWindow::createActions() {
     connect(menuAction(file, tr("Save preset &as…"), QKeySequence::SaveAs,
                        tr("Save the experiment under a new name")),
             &QAction::triggered, document_, &ExperimentDocument::saveAs);
+    connect(menuAction(file, tr("Save sna&pshot…"), QKeySequence(Qt::CTRL | Qt::ALT | Qt::Key_S),
+                       tr("Save the experiment with every particle, to continue exactly where it is")),
+            &QAction::triggered, this, [this] {
+                QDir().mkpath(ExperimentDocument::userPresetDirectory());
+                const QString path =
+                    QFileDialog::getSaveFileName(this, tr("Save snapshot"),
+                                                 QDir(ExperimentDocument::userPresetDirectory())
+                                                     .filePath(document_->title() + "-snapshot.json"),
+                                                 tr("Snapshots (*.json)"));
+                if (!path.isEmpty()) document_->saveSnapshotTo(path);
+            });
     file->addSeparator();
     connect(menuAction(file, tr("Save viewport &image…"), QKeySequence(Qt::CTRL | Qt::Key_E),
                        tr("Save what the viewport shows as a PNG")),
@@ -70,6 +85,17 @@ void MainWindow::createActions() {
                 if (!error.isEmpty()) QMessageBox::critical(this, tr("Cannot save the image"), error);
             });
     file->addSeparator();
+    createLammpsActions(file);
+    file->addSeparator();
+    QAction* preferences = menuAction(file, tr("Pr&eferences…"), QKeySequence::Preferences,
+                                      tr("Choose the language of ParticleLab"));
+    preferences->setObjectName("preferencesAction");
+    connect(preferences, &QAction::triggered, this, [this] {
+        auto* dialog = new PreferencesDialog(this);
+        dialog->setAttribute(Qt::WA_DeleteOnClose);
+        dialog->open();
+    });
+    file->addSeparator();
     connect(menuAction(file, tr("&Quit"), QKeySequence::Quit, tr("Close ParticleLab")), &QAction::triggered,
             this, &QWidget::close);
 
@@ -78,6 +104,7 @@ void MainWindow::createActions() {
     bar->setObjectName("simulationToolBar");
     playAction_ = menuAction(sim, tr("Play"), Qt::Key_Space, tr("Run or pause the simulation"));
     playAction_->setIcon(style()->standardIcon(QStyle::SP_MediaPlay));
+    playAction_->setObjectName("playAction");
     connect(playAction_, &QAction::triggered, controller_, &SimulationController::togglePlay);
     QAction* step = menuAction(sim, tr("Step"), Qt::Key_Period, tr("Advance one time step"));
     step->setIcon(style()->standardIcon(QStyle::SP_MediaSkipForward));
@@ -87,10 +114,12 @@ void MainWindow::createActions() {
     reset->setIcon(style()->standardIcon(QStyle::SP_BrowserReload));
     connect(reset, &QAction::triggered, controller_, &SimulationController::reset);
     bar->addActions({playAction_, step, reset});
+    runActions_ = {playAction_, step, reset};
     bar->addSeparator();
     bar->addWidget(new QLabel(tr(" Steps per frame "), bar));
     speed_ = new QSpinBox(bar);
-    speed_->setRange(-10, 10);
+    speed_->setObjectName("stepsPerFrame");
+    speed_->setRange(-SimulationController::kMaxStepsPerFrame, SimulationController::kMaxStepsPerFrame);
     speed_->setValue(controller_->stepsPerFrame());
     speed_->setToolTip(tr("Signed speed: negative values run time backwards, 0 pauses ([ slower, ] faster)"));
     connect(speed_, &QSpinBox::valueChanged, controller_, &SimulationController::setStepsPerFrame);
@@ -99,12 +128,13 @@ void MainWindow::createActions() {
         speed_->setValue(n);
     });
     bar->addWidget(speed_);
-    connect(menuAction(sim, tr("Slower"), Qt::Key_BracketLeft, tr("One step per frame less")),
-            &QAction::triggered, speed_, [this] { speed_->stepDown(); });
-    connect(menuAction(sim, tr("Faster"), Qt::Key_BracketRight, tr("One step per frame more")),
-            &QAction::triggered, speed_, [this] { speed_->stepUp(); });
-    connect(menuAction(sim, tr("Reverse time"), Qt::Key_Backspace, tr("Run time the other way")),
-            &QAction::triggered, speed_, [this] { speed_->setValue(-speed_->value()); });
+    QAction* slower = menuAction(sim, tr("Slower"), Qt::Key_BracketLeft, tr("One step per frame less"));
+    connect(slower, &QAction::triggered, speed_, [this] { speed_->stepDown(); });
+    QAction* faster = menuAction(sim, tr("Faster"), Qt::Key_BracketRight, tr("One step per frame more"));
+    connect(faster, &QAction::triggered, speed_, [this] { speed_->stepUp(); });
+    QAction* reverse = menuAction(sim, tr("Reverse time"), Qt::Key_Backspace, tr("Run time the other way"));
+    connect(reverse, &QAction::triggered, speed_, [this] { speed_->setValue(-speed_->value()); });
+    runActions_ << slower << faster << reverse;
 
     // Where the models compute: the factory in gl/Backends.h decides what "auto" means here.
     QMenu* backendMenu = sim->addMenu(tr("Compute &backend"));
@@ -138,6 +168,7 @@ void MainWindow::createActions() {
                 dialog->setAttribute(Qt::WA_DeleteOnClose);
                 dialog->show();
             });
+    createRunOnLammpsAction(sim);
 
     viewMenu_ = menuBar()->addMenu(tr("&View"));
     connect(menuAction(viewMenu_, tr("Zoom to &fit"), QKeySequence(Qt::CTRL | Qt::Key_0),
@@ -148,6 +179,13 @@ void MainWindow::createActions() {
                    tr("Large fonts and thick lines for a classroom projector"));
     projectorAction_->setCheckable(true);
     connect(projectorAction_, &QAction::toggled, this, &MainWindow::setProjectorMode);
+    presentAction_ =
+        menuAction(viewMenu_, tr("P&resent"), Qt::Key_F5,
+                   tr("Full screen: the viewport, one plot, big readouts and a lesson's controls "
+                      "(Escape leaves)"));
+    presentAction_->setObjectName("presentAction");
+    presentAction_->setCheckable(true);
+    connect(presentAction_, &QAction::toggled, this, [this](bool on) { present_->setActive(on); });
     viewMenu_->addSeparator();
 }
 
@@ -157,7 +195,7 @@ void MainWindow::createSceneBar() {
     bar->addWidget(new QLabel(tr(" Scene "), bar));
     scenePicker_ = new QComboBox(bar);
     for (const ModelInfo& info : modelCatalog())
-        scenePicker_->addItem(QString::fromStdString(info.title), QString::fromStdString(info.kind));
+        scenePicker_->addItem(coreText(info.title), QString::fromStdString(info.kind));
     scenePicker_->setToolTip(tr("The kind of simulation: choosing one opens its first built-in experiment"));
     connect(scenePicker_, &QComboBox::activated, this, [this](int index) {
         const QString kind = scenePicker_->itemData(index).toString();
@@ -192,7 +230,8 @@ void MainWindow::createToolPalette() {
         ViewportTool tool;
         QString text, tip;
     } entries[] = {
-        {ViewportTool::Drag, tr("Drag"), tr("Drag obstacles and the piston; drag empty space to pan")},
+        {ViewportTool::Drag, tr("Drag"),
+         tr("Drag obstacles and the piston; drag empty space to pan (in the fluid: to pour)")},
         {ViewportTool::Spawn, tr("Spawn"),
          tr("Drag a rectangle to fill it with particles, or click for one")},
         {ViewportTool::AddDisc, tr("Add disc"), tr("Click to place a disc obstacle")},
@@ -246,6 +285,27 @@ void MainWindow::createToolPalette() {
     connect(menuAction(menu, tr("Cool"), QKeySequence(Qt::CTRL | Qt::Key_Down),
                        tr("Lower the kinetic energy by 10 %")),
             &QAction::triggered, this, [scaleEnergy] { scaleEnergy(1.0 / kHeatStep); });
+    menu->addSeparator();
+    // The piston at the scene's piston speed: pressing the same direction again holds it.
+    const auto drivePiston = [this](int direction) {
+        Model* model = controller_->model();
+        SceneTools* tools = model ? model->tools() : nullptr;
+        if (!tools || !tools->hasPiston()) {
+            statusBar()->showMessage(
+                tr("This experiment has no piston: tick “Piston” in Parameters → Walls and fields."), 6000);
+            return;
+        }
+        tools->drivePiston(tools->pistonDirection() == direction ? 0 : direction);
+        controller_->noteEdited();
+        if (!controller_->isRunning() && tools->pistonDirection() != 0)
+            statusBar()->showMessage(tr("The piston moves while time runs (Space)."), 6000);
+    };
+    connect(menuAction(menu, tr("Compress"), QKeySequence(Qt::CTRL | Qt::Key_Left),
+                       tr("Move the piston left at the piston speed; again to hold it")),
+            &QAction::triggered, this, [drivePiston] { drivePiston(-1); });
+    connect(menuAction(menu, tr("Expand"), QKeySequence(Qt::CTRL | Qt::Key_Right),
+                       tr("Move the piston right at the piston speed; again to hold it")),
+            &QAction::triggered, this, [drivePiston] { drivePiston(+1); });
 }
 
 void MainWindow::syncGravity() {
@@ -253,7 +313,7 @@ void MainWindow::syncGravity() {
     const ParamSpec* spec = model ? findSpec(model->paramSpecs(), "gravity") : nullptr;
     const bool toggle = spec && spec->kind == ParamKind::Boolean;
     gravity_->setVisible(toggle);
-    gravity_->setEnabled(toggle);
+    gravity_->setEnabled(toggle && !controller_->isReadOnly());
     if (!toggle) return;
     const QSignalBlocker block(gravity_);
     gravity_->setChecked(std::get<bool>(model->params().at("gravity")));

@@ -16,13 +16,21 @@ void SeriesStore::restart(const std::vector<std::string>& columns) {
 }
 
 void SeriesStore::append(std::vector<double> row) {
-    if (table_.rows() >= kMaxRows) {
-        TimeSeries thinned(table_.columns());
-        for (std::size_t i = 0; i < table_.rows(); i += 2) thinned.append(table_.row(i));
-        table_ = std::move(thinned);
-    }
+    if (table_.rows() >= kMaxRows) thinToHalf();
     table_.append(std::move(row));
     emit appended();
+}
+
+void SeriesStore::replace(TimeSeries table) {
+    table_ = std::move(table);
+    while (table_.rows() > kMaxRows) thinToHalf();
+    emit restarted();
+}
+
+void SeriesStore::thinToHalf() {
+    TimeSeries thinned(table_.columns());
+    for (std::size_t i = 0; i < table_.rows(); i += 2) thinned.append(table_.row(i));
+    table_ = std::move(thinned);
 }
 
 int SeriesStore::column(const QString& name) const {

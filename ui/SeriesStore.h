@@ -18,6 +18,8 @@ public:
     // Starts a new table (a new model or a reset).
     void restart(const std::vector<std::string>& columns);
     void append(std::vector<double> row);
+    // Starts over with a finished table (a run read back from elsewhere): one restarted(), no appended().
+    void replace(TimeSeries table);
 
     const TimeSeries& table() const { return table_; }
     int column(const QString& name) const; // −1 when the model has no such column
@@ -29,6 +31,8 @@ signals:
     void appended();
 
 private:
+    void thinToHalf(); // keeps every other row
+
     TimeSeries table_;
 };
 

@@ -2,17 +2,21 @@
 // frame rate (a slow machine runs the same trajectory, only slower).
 #include "SimulationController.h"
 
+#include "ImportedRunModel.h"
 #include "gpu/QtGlContext.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace pl::ui {
 
 namespace {
 constexpr int kFrameIntervalMs = 16; // ~60 frames per second
-constexpr int kMaxStepsPerFrame = 10;
-constexpr int kFramesPerSample = 3;          // ~20 rows per second for the plots
-constexpr double kHeatPerFrameAtFull = 0.03; // relative kinetic-energy change per frame at rate ±1
+constexpr int kFramesPerSample = 3;  // ~20 rows per second for the plots
+// Relative kinetic-energy change per time step at rate ±1: heating acts per step of model time, so a
+// held slider warms the gas as much per simulated second at 1 as at 20 steps per frame (at the default
+// 5 steps per frame, 3 % a frame).
+constexpr double kHeatPerStepAtFull = 0.006;
 } // namespace
 
 SimulationController::SimulationController(QObject* parent) : QObject(parent) {
@@ -21,14 +25,16 @@ SimulationController::SimulationController(QObject* parent) : QObject(parent) {
     connect(&timer_, &QTimer::timeout, this, &SimulationController::advanceFrame);
 }
 
-QString SimulationController::load(const Preset& preset) {
+QString SimulationController::load(const Preset& preset, const StateRecord* state) {
     gl::BackendChoice next;
     try {
         next = gl::createModel(preset.model, backend_, &preset, appComputeContext());
+        if (state) next.model->restoreState(*state);
     } catch (const std::exception& e) {
         return QString::fromStdString(e.what());
     }
     model_ = std::move(next.model);
+    importedFrom_.clear();
     if (!next.message.empty()) emit notice(QString::fromStdString(next.message));
     pending_.clear();
     if (stepsPerFrame_ < 0 && !model_->reversible()) setStepsPerFrame(-stepsPerFrame_);
@@ -41,10 +47,30 @@ QString SimulationController::load(const Preset& preset) {
     return {};
 }
 
+void SimulationController::showImported(std::unique_ptr<Model> model, TimeSeries series,
+                                        const QString& source) {
+    pause();
+    // The run's last row says where it ended; the imported state itself starts its counters at zero.
+    const auto& columns = series.columns();
+    const auto last = [&series, &columns](const char* name) {
+        const auto it = std::find(columns.begin(), columns.end(), name);
+        return it == columns.end() || series.rows() == 0
+                   ? 0.0
+                   : series.row(series.rows() - 1)[static_cast<std::size_t>(it - columns.begin())];
+    };
+    model_ = std::make_unique<ImportedRunModel>(std::move(model), static_cast<std::int64_t>(last("step")),
+                                                last("time"));
+    importedFrom_ = source;
+    pending_.clear();
+    baseDt_ = 0.0; // nothing steps, so the direction of time is never applied to it
+    series_.replace(std::move(series));
+    emit modelReplaced();
+}
+
 void SimulationController::setBackend(gl::Backend backend) {
     if (backend == backend_) return;
     backend_ = backend;
-    if (!model_) return;
+    if (!model_ || isReadOnly()) return; // the next experiment loaded computes there
     const bool wasRunning = isRunning();
     pause();
     const QString problem = load(model_->toPreset());
@@ -58,8 +84,15 @@ void SimulationController::setBackend(gl::Backend backend) {
 
 QString SimulationController::setParameters(const ParamValues& values) {
     if (!model_) return tr("No experiment is loaded.");
+    if (isReadOnly()) return tr("This run is read-only: open a preset to change parameters.");
     try {
         model_->setParams(values);
+    } catch (const ParamError& e) { // in the panel's words: each parameter by its label
+        const auto& specs = model_->paramSpecs();
+        return QString::fromStdString(nameParameters(e.message(), [&specs](const std::string& key) {
+            const ParamSpec* spec = findSpec(specs, key);
+            return spec ? spec->label : key;
+        }));
     } catch (const std::exception& e) {
         return QString::fromStdString(e.what());
     }
@@ -85,7 +118,7 @@ bool SimulationController::runComplete() const {
 }
 
 void SimulationController::play() {
-    if (!model_ || model_->failure()) return;
+    if (!model_ || model_->failure() || isReadOnly()) return;
     if (runComplete()) {
         emit notice(tr("The run is complete (%1 steps): Reset to run it again, or raise the run length.")
                         .arg(model_->plannedSteps()));
@@ -107,7 +140,7 @@ void SimulationController::togglePlay() {
 }
 
 void SimulationController::stepOnce() {
-    if (!model_) return;
+    if (!model_ || isReadOnly()) return;
     pause();
     model_->step();
     sample();
@@ -115,7 +148,7 @@ void SimulationController::stepOnce() {
 }
 
 void SimulationController::reset() {
-    if (!model_) return;
+    if (!model_ || isReadOnly()) return;
     model_->reset();
     pending_.clear();
     applyDirection();
@@ -157,13 +190,14 @@ void SimulationController::sample() {
 }
 
 void SimulationController::advanceFrame() {
-    if (!model_) return;
-    if (heatRate_ != 0.0 && model_->tools() && model_->particleCount() > 0)
-        model_->tools()->scaleKineticEnergy(std::exp(kHeatPerFrameAtFull * heatRate_));
+    if (!model_ || isReadOnly()) return;
     int steps = std::abs(stepsPerFrame_);
     if (model_->plannedSteps() > 0)
         steps = static_cast<int>(
             std::clamp<std::int64_t>(model_->plannedSteps() - model_->stepCount(), 0, steps));
+    // The frame's steps of heating at once: one O(N) rescale a frame instead of one a step.
+    if (heatRate_ != 0.0 && steps > 0 && model_->tools() && model_->particleCount() > 0)
+        model_->tools()->scaleKineticEnergy(std::exp(kHeatPerStepAtFull * heatRate_ * steps));
     for (int s = 0; s < steps && !model_->failure(); ++s) model_->step();
     stepsSinceClock_ += steps;
     if (rateClock_.isValid() && rateClock_.elapsed() > 500) {

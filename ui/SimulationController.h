@@ -18,9 +18,18 @@ class SimulationController : public QObject {
     Q_OBJECT
 public:
     explicit SimulationController(QObject* parent = nullptr);
+    // The seed's speed slider went to 10; 20 lets a slow machine keep up with a fast one's model time.
+    static constexpr int kMaxStepsPerFrame = 20;
 
-    // Loads a preset. On error the current experiment is kept and the message returned; empty on success.
-    QString load(const Preset& preset);
+    // Loads a preset, and with a snapshot's state continues from it. On error the current experiment is
+    // kept and the message returned; empty on success.
+    QString load(const Preset& preset, const StateRecord* state = nullptr);
+    // Shows a run computed elsewhere (a LAMMPS run read back): its last state in the viewport and
+    // histograms, its series in the plots. Read-only until the next load(): time does not run and
+    // parameters do not change. source says where the data came from, for the status line.
+    void showImported(std::unique_ptr<Model> model, TimeSeries series, const QString& source);
+    bool isReadOnly() const { return !importedFrom_.isEmpty(); }
+    const QString& importedFrom() const { return importedFrom_; }
     // Where new models compute (auto: the GPU for scenes large enough to gain from it). Changing it
     // restarts the experiment from its current parameters on the new backend.
     gl::Backend backend() const { return backend_; }
@@ -44,9 +53,9 @@ public slots:
     void togglePlay();
     void stepOnce();
     void reset();
-    // −10 … 10 as in the seed's speed slider: |n| steps per frame, the sign chooses the direction of time.
+    // −20 … 20: |n| steps per frame, the sign chooses the direction of time.
     void setStepsPerFrame(int n);
-    // −1 (cool) … 1 (heat): kinetic energy changes by up to ±3 % per frame while it is non-zero.
+    // −1 (cool) … 1 (heat): kinetic energy changes by up to ±0.6 % per time step while it is non-zero.
     void setHeatRate(double rate);
     // Advances one frame's worth of steps and notifies views (the timer calls it; tests may too).
     void advanceFrame();
@@ -72,6 +81,7 @@ private:
     gl::Backend backend_ = gl::Backend::Auto;
     SeriesStore series_;
     ParamValues pending_;
+    QString importedFrom_; // empty while the model is ours to run
     QTimer timer_;
     int stepsPerFrame_ = 5;
     double baseDt_ = 0.0;

@@ -1,5 +1,6 @@
 // Implementation of the CLI subcommands on top of the model catalog.
 #include "Commands.h"
+#include "RunSupport.h"
 
 #include "catalog/ModelCatalog.h"
 #include "common/AtomicFile.h"
@@ -30,23 +31,6 @@ double secondsSince(Clock::time_point start) {
     return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-// Applies "key=value" overrides on top of the preset's parameters (validated by the model's reset).
-void applySets(Preset& preset, const std::vector<std::string>& sets) {
-    const auto* specs = specsForModel(preset.model);
-    for (const auto& assignment : sets) {
-        const auto eq = assignment.find('=');
-        if (eq == std::string::npos || eq == 0)
-            throw PresetError("", "--set expects key=value, got \"" + assignment + "\"");
-        const std::string key = assignment.substr(0, eq);
-        const ParamSpec* spec = findSpec(*specs, key);
-        if (!spec) throw PresetError(key, "--set: unknown parameter '" + key + "' for model " + preset.model);
-        ParamValue value = parseValue(*spec, assignment.substr(eq + 1));
-        if (auto problem = checkValue(*spec, value); !problem.empty())
-            throw PresetError(key, "--set: " + problem);
-        preset.params[key] = std::move(value);
-    }
-}
-
 void setThreads(int threads) {
     if (threads > 0) omp_set_num_threads(threads);
 }
@@ -70,21 +54,6 @@ template <class MakeText> void writeText(const std::string& path, MakeText makeT
 std::string particlesCsv(const Model& model) {
     std::ostringstream out;
     model.writeParticles(out);
-    return out.str();
-}
-
-std::string histogramsCsv(const Model& model) {
-    std::ostringstream out;
-    out.precision(17);
-    out << "histogram,bin_lo,bin_hi,count,density,theory_density\n";
-    for (const auto& h : model.histograms()) {
-        for (std::size_t b = 0; b < h.counts.bins(); ++b) {
-            const double lo = h.counts.lo() + static_cast<double>(b) * h.counts.binWidth();
-            out << h.name << ',' << lo << ',' << lo + h.counts.binWidth() << ',' << h.counts.count(b) << ','
-                << h.counts.density(b) << ','
-                << (h.theoryDensity ? h.theoryDensity(h.counts.binCentre(b)) : 0.0) << '\n';
-        }
-    }
     return out.str();
 }
 
@@ -115,6 +84,38 @@ private:
 
 } // namespace
 
+// Applies "key=value" overrides on top of the preset's parameters (validated by the model's reset).
+void applySets(Preset& preset, const std::vector<std::string>& sets) {
+    const auto* specs = specsForModel(preset.model);
+    for (const auto& assignment : sets) {
+        const auto eq = assignment.find('=');
+        if (eq == std::string::npos || eq == 0)
+            throw PresetError("", "--set expects key=value, got \"" + assignment + "\"");
+        const std::string key = assignment.substr(0, eq);
+        const ParamSpec* spec = findSpec(*specs, key);
+        if (!spec) throw PresetError(key, "--set: unknown parameter '" + key + "' for model " + preset.model);
+        ParamValue value = parseValue(*spec, assignment.substr(eq + 1));
+        if (auto problem = checkValue(*spec, value); !problem.empty())
+            throw PresetError(key, "--set: " + problem);
+        preset.params[key] = std::move(value);
+    }
+}
+
+std::string histogramsCsv(const Model& model) {
+    std::ostringstream out;
+    out.precision(17);
+    out << "histogram,bin_lo,bin_hi,count,density,theory_density\n";
+    for (const auto& h : model.histograms()) {
+        for (std::size_t b = 0; b < h.counts.bins(); ++b) {
+            const double lo = h.counts.lo() + static_cast<double>(b) * h.counts.binWidth();
+            out << h.name << ',' << lo << ',' << lo + h.counts.binWidth() << ',' << h.counts.count(b) << ','
+                << h.counts.density(b) << ','
+                << (h.theoryDensity ? h.theoryDensity(h.counts.binCentre(b)) : 0.0) << '\n';
+        }
+    }
+    return out.str();
+}
+
 int listPresets() {
     for (const auto& p : builtinPresets()) {
         std::string summary = p.preset.description.substr(0, p.preset.description.find(". "));
@@ -123,44 +124,84 @@ int listPresets() {
     return kOk;
 }
 
+namespace {
+
+// Every file a run writes is checked before it starts: a long run never ends in an unwritable path.
+void checkRunOutputs(const RunOptions& options) {
+    for (const std::string* path :
+         {&options.out, &options.histogram, &options.dumpInitial, &options.dumpFinal})
+        if (!path->empty()) checkOutputPath(*path);
+}
+
+void warnIfInaccurate(const Model& model) {
+    if (const std::string warning = model.accuracyWarning(); !warning.empty())
+        std::cerr << "particlelab-cli: warning: " << warning << "\n";
+}
+
+} // namespace
+
 int runSimulation(const RunOptions& options) {
     setThreads(options.threads);
     std::unique_ptr<Model> model;
     try {
+        checkRunOutputs(options);
+    } catch (const FileError& e) {
+        std::cerr << "particlelab-cli: " << e.what() << "\n";
+        return kCannotWrite;
+    }
+    try {
         model = prepare(options.preset, options.sets, options.seed, options.backend);
+    } catch (const std::bad_alloc&) {
+        std::cerr << "particlelab-cli: not enough memory to build this experiment; use fewer particles\n";
+        return kBadInput;
     } catch (const std::exception& e) {
         std::cerr << "particlelab-cli: " << e.what() << "\n";
         return kBadInput;
     }
+    warnIfInaccurate(*model);
+    const StopSignals stop;
+    long long sampled = 0;
     try {
         writeText(options.dumpInitial, [&] { return particlesCsv(*model); });
         const long long planned = model->plannedSteps();
         const long long steps = options.steps.value_or(planned > 0 ? planned : kDefaultSteps);
         const long long every = options.every.value_or(planned > 0 ? 1 : kDefaultEvery);
-        TimeSeries series(model->seriesColumns());
+        SeriesCsv series(options.out, model->seriesColumns());
         Progress progress(steps, !options.quiet);
-        series.append(model->sampleSeries());
-        for (long long s = 1; s <= steps && !model->failure(); ++s) {
+        // The health is checked before each row is kept, so no row of an exploded state is written.
+        auto sample = [&] {
+            model->checkHealthNow();
+            if (!model->failure()) series.append(model->sampleSeries());
+        };
+        sample();
+        for (long long s = 1; s <= steps && !model->failure() && !stop.caught(); ++s) {
             model->step();
-            if (s % every == 0 || s == steps) series.append(model->sampleSeries());
+            if (!model->failure() && (s % every == 0 || s == steps)) sample();
             progress.update(s);
         }
+        model->checkHealthNow(); // the end of every run, sampled or not
         progress.finish();
-        // Everything measured so far is written even when the model failed: nothing is lost.
-        writeText(options.out, [&] {
-            std::ostringstream csv;
-            series.writeCsv(csv);
-            return csv.str();
-        });
+        sampled = series.rows();
+        series.close();
+        // Everything measured so far is kept even when the model failed or the run was stopped.
         writeText(options.histogram, [&] { return histogramsCsv(*model); });
         writeText(options.dumpFinal, [&] { return particlesCsv(*model); });
     } catch (const FileError& e) {
         std::cerr << "particlelab-cli: " << e.what() << "\n";
         return kCannotWrite;
+    } catch (const std::bad_alloc&) {
+        std::cerr << "particlelab-cli: the run ran out of memory at step " << model->stepCount()
+                  << "; the rows sampled until then are kept\n";
+        return kModelFailed;
     }
     if (auto failure = model->failure()) {
         std::cerr << "particlelab-cli: the model stopped: " << failure->message() << "\n";
         return kModelFailed;
+    }
+    if (const int signal = stop.caught()) {
+        std::cerr << "particlelab-cli: stopped by " << StopSignals::name(signal) << " at step "
+                  << model->stepCount() << "; the " << sampled << " rows sampled until then are kept\n";
+        return StopSignals::exitCode(signal);
     }
     return kOk;
 }
@@ -235,6 +276,7 @@ int benchmark(const BenchOptions& options) {
         std::cerr << "particlelab-cli: " << e.what() << "\n";
         return kBadInput;
     }
+    warnIfInaccurate(*model);
     // Warm-up: caches, page faults, the first cell-list allocation.
     for (long long s = 0; s < std::min<long long>(options.steps / 10 + 1, 200); ++s) model->step();
     std::vector<double> seconds;
@@ -244,6 +286,7 @@ int benchmark(const BenchOptions& options) {
         model->finishPendingWork();
         seconds.push_back(secondsSince(start));
     }
+    model->checkHealthNow();
     if (auto failure = model->failure()) {
         std::cerr << "particlelab-cli: the model stopped: " << failure->message() << "\n";
         return kModelFailed;

@@ -1,6 +1,9 @@
 // The CLI's subcommands: list, run, bench. Each returns the process exit code.
 #pragma once
 
+#include "common/Model.h"
+#include "common/Preset.h"
+
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -56,6 +59,11 @@ struct SweepOptions {
 
 // Writes text to path atomically (kCannotWrite and a message when it cannot), or to standard output.
 int writeOrPrint(const std::string& path, const std::string& text);
+
+// Applies "key=value" overrides on top of the preset's parameters. Throws PresetError.
+void applySets(Preset& preset, const std::vector<std::string>& sets);
+// The model's histograms as CSV: histogram,bin_lo,bin_hi,count,density,theory_density.
+std::string histogramsCsv(const Model& model);
 
 int listPresets();
 int runSimulation(const RunOptions& options);

@@ -1,8 +1,23 @@
 // particlelab-cli: run, benchmark and list experiments without a display.
 #include "Commands.h"
 #include "MethodsCommands.h"
+#include "OptionChecks.h"
+#include "ScaleOutCommands.h"
+#include "common/AtomicFile.h"
 
 #include <CLI/CLI.hpp>
+#include <iostream>
+#include <limits>
+
+namespace {
+
+// The help command of the subcommand being parsed, else of the program.
+std::string helpCommand(const CLI::App& app) {
+    for (const CLI::App* sub : app.get_subcommands()) return "particlelab-cli " + sub->get_name() + " --help";
+    return "particlelab-cli --help";
+}
+
+} // namespace
 
 int main(int argc, char** argv) {
     using namespace pl::cli;
@@ -15,20 +30,25 @@ int main(int argc, char** argv) {
     auto* runCmd = app.add_subcommand("run", "Run a preset and write observables as CSV");
     runCmd->add_option("preset", run.preset, "Built-in preset name or preset file")->required();
     runCmd->add_option("--steps", run.steps, "Number of steps (default: the preset's run length, else 1000)")
-        ->check(CLI::NonNegativeNumber);
+        ->transform(wholeNumber(0, kMaxSteps, "10⁹ steps are days of computing even for a small scene"));
     runCmd->add_option("--set", run.sets, "Override a parameter: key=value (repeatable)");
-    runCmd->add_option("--seed", run.seed, "Random seed (default: the preset's)");
+    runCmd->add_option("--seed", run.seed, "Random seed (default: the preset's)")
+        ->transform(wholeNumber(0, std::numeric_limits<long long>::max()));
     runCmd->add_option("--threads", run.threads, "OpenMP threads (default: all cores)")
-        ->check(CLI::NonNegativeNumber);
+        ->transform(threadCount());
     runCmd
         ->add_option("--every", run.every,
                      "Sample observables every K steps (default: every step of a preset with a run "
                      "length, else 100)")
-        ->check(CLI::PositiveNumber);
-    runCmd->add_option("--out", run.out, "Time series CSV");
-    runCmd->add_option("--histogram", run.histogram, "Final histograms CSV (speed; v_x for DSMC)");
-    runCmd->add_option("--dump-initial", run.dumpInitial, "Initial particles CSV (id,species,x,y,vx,vy)");
-    runCmd->add_option("--dump-final", run.dumpFinal, "Final particles CSV (id,species,x,y,vx,vy)");
+        ->transform(wholeNumber(1, kMaxSteps));
+    runCmd->add_option("--out", run.out, "Time series CSV, written row by row as it is sampled")
+        ->check(fileName());
+    runCmd->add_option("--histogram", run.histogram, "Final histograms CSV (speed; v_x for DSMC)")
+        ->check(fileName());
+    runCmd->add_option("--dump-initial", run.dumpInitial, "Initial particles CSV (id,species,x,y,vx,vy)")
+        ->check(fileName());
+    runCmd->add_option("--dump-final", run.dumpFinal, "Final particles CSV (id,species,x,y,vx,vy)")
+        ->check(fileName());
     runCmd->add_flag("--quiet", run.quiet, "No progress line");
     runCmd
         ->add_option("--backend", run.backend,
@@ -39,38 +59,38 @@ int main(int argc, char** argv) {
     auto* benchCmd =
         app.add_subcommand("bench", "Time a preset; print one JSON line with particle-steps per second");
     benchCmd->add_option("preset", bench.preset, "Built-in preset name or preset file")->required();
-    benchCmd->add_option("--steps", bench.steps, "Timed steps per repeat")->check(CLI::PositiveNumber);
+    benchCmd->add_option("--steps", bench.steps, "Timed steps per repeat")
+        ->transform(wholeNumber(1, kMaxSteps));
     benchCmd->add_option("--set", bench.sets, "Override a parameter: key=value (repeatable)");
-    benchCmd->add_option("--threads", bench.threads, "OpenMP threads")->check(CLI::NonNegativeNumber);
+    benchCmd->add_option("--threads", bench.threads, "OpenMP threads")->transform(threadCount());
     benchCmd->add_option("--backend", bench.backend, "cpu, gl or auto")
         ->check(CLI::IsMember({"cpu", "gl", "auto"}));
     benchCmd->add_option("--repeats", bench.repeats, "Timed repeats; the median is reported")
-        ->check(CLI::PositiveNumber);
+        ->transform(wholeNumber(1, 1000));
 
     EchoOptions echo;
     auto* echoCmd = app.add_subcommand(
         "echo", "Time reversal measured: run n steps forward and n back, print the rms return error (CSV)");
     echoCmd->add_option("--disks", echo.disks, "Disks in the periodic box (square lattice)")
-        ->check(CLI::Range(2, 4096));
+        ->transform(wholeNumber(2, 4096));
     echoCmd->add_option("--steps", echo.steps, "Values of n (default 10 30 … 10000)")
-        ->check(CLI::PositiveNumber);
-    echoCmd->add_option("--out", echo.out, "CSV file (default: standard output)");
+        ->transform(wholeNumber(1, kMaxSteps / 2));
+    echoCmd->add_option("--out", echo.out, "CSV file (default: standard output)")->check(fileName());
 
     SweepOptions sweep;
     auto* sweepCmd = app.add_subcommand(
         "sweep", "Accuracy against cost of the gas's integrators on a harmonic pair (CSV; orders on stderr)");
     sweepCmd->add_option("--integrators", sweep.integrators, "Schemes to compare (default: all five)");
     sweepCmd->add_option("--steps", sweep.steps, "Steps over the horizon, one run each (default 16 … 256)")
-        ->check(CLI::PositiveNumber);
-    sweepCmd->add_option("--stiffness", sweep.stiffness, "k of the contact [M/T²]")
-        ->check(CLI::PositiveNumber);
+        ->transform(wholeNumber(1, 1'000'000));
+    sweepCmd->add_option("--stiffness", sweep.stiffness, "k of the contact [M/T²]")->check(positiveReal());
     sweepCmd->add_option("--from", sweep.from,
                          "A gas preset: sweep from its state, errors against a Forest–Ruth reference");
     sweepCmd->add_option("--set", sweep.sets, "Override a parameter of --from: key=value (repeatable)");
     sweepCmd
         ->add_option("--horizon", sweep.horizon, "Simulated time of each run from --from (default 64 steps)")
-        ->check(CLI::NonNegativeNumber);
-    sweepCmd->add_option("--out", sweep.out, "CSV file (default: standard output)");
+        ->check(positiveReal(true));
+    sweepCmd->add_option("--out", sweep.out, "CSV file (default: standard output)")->check(fileName());
 
     StabilityOptions stability;
     auto* stabilityCmd = app.add_subcommand(
@@ -79,47 +99,71 @@ int main(int argc, char** argv) {
         "unstable (CSV; measured limits on stderr)");
     stabilityCmd->add_option("--integrators", stability.integrators, "Schemes (default: all five)");
     stabilityCmd->add_option("--omega-dt", stability.omegaDt, "ω dt of the columns (default 0.05 … 5)")
-        ->check(CLI::PositiveNumber);
+        ->check(positiveReal());
     stabilityCmd->add_option("--stiffness", stability.stiffness, "k of the rows (default 100 1000 10000)")
-        ->check(CLI::PositiveNumber);
-    stabilityCmd->add_option("--steps", stability.steps, "Steps per cell")->check(CLI::PositiveNumber);
+        ->check(positiveReal());
+    stabilityCmd->add_option("--steps", stability.steps, "Steps per cell")
+        ->transform(wholeNumber(1, kMaxSteps));
     stabilityCmd
         ->add_option("--tolerance", stability.tolerance, "Energy error above which a cell is inaccurate")
-        ->check(CLI::PositiveNumber);
-    stabilityCmd->add_option("--out", stability.out, "CSV file (default: standard output)");
+        ->check(positiveReal());
+    stabilityCmd->add_option("--out", stability.out, "CSV file (default: standard output)")
+        ->check(fileName());
 
     FluidSweepOptions fluid;
     auto* fluidCmd = app.add_subcommand(
         "fluid-sweep", "The fluid against dt × iterations: density error, cost, stable / over-compressed / "
                        "exploded (CSV)");
-    fluidCmd->add_option("--dt", fluid.dt, "Time steps [s]")->check(CLI::PositiveNumber);
-    fluidCmd->add_option("--iterations", fluid.iterations, "Solver iterations")->check(CLI::Range(1, 100));
+    fluidCmd->add_option("--dt", fluid.dt, "Time steps [s]")->check(positiveReal());
+    fluidCmd->add_option("--iterations", fluid.iterations, "Solver iterations")
+        ->transform(wholeNumber(1, 100));
     fluidCmd->add_option("--duration", fluid.duration, "Simulated time of each cell [s]")
-        ->check(CLI::PositiveNumber);
+        ->check(positiveReal());
     fluidCmd->add_option("--tolerance", fluid.tolerance, "Mean density error that counts as over-compressed")
-        ->check(CLI::PositiveNumber);
-    fluidCmd->add_option("--out", fluid.out, "CSV file (default: standard output)");
+        ->check(positiveReal());
+    fluidCmd->add_option("--out", fluid.out, "CSV file (default: standard output)")->check(fileName());
 
     DsmcSweepOptions dsmc;
     auto* dsmcCmd = app.add_subcommand(
         "dsmc-sweep", "DSMC against the exact BKW relaxation: particles × ν dt, moment error and cost (CSV)");
     dsmcCmd->add_option("--particles", dsmc.particles, "Particles in the cell")
-        ->check(CLI::Range(2, 1 << 24));
+        ->transform(wholeNumber(2, 1 << 24));
     dsmcCmd->add_option("--nu-dt", dsmc.nuDt, "Collision probabilities per particle and step")
-        ->check(CLI::PositiveNumber);
-    dsmcCmd->add_option("--out", dsmc.out, "CSV file (default: standard output)");
+        ->check(positiveReal());
+    dsmcCmd->add_option("--out", dsmc.out, "CSV file (default: standard output)")->check(fileName());
 
     RelaxOptions relax;
     auto* relaxCmd = app.add_subcommand(
         "relax", "MD against planar DSMC from the same two beams: kurtosis of v_x against collisions per "
                  "particle (CSV; cost ratio and KS test on stderr)");
-    relaxCmd->add_option("--particles", relax.particles, "Particles of each")->check(CLI::Range(4, 1 << 20));
+    relaxCmd->add_option("--particles", relax.particles, "Particles of each")
+        ->transform(wholeNumber(4, 1 << 20));
     relaxCmd->add_option("--collisions", relax.collisions, "Collisions per particle to run")
         ->check(CLI::Range(0.1, 1000.0));
-    relaxCmd->add_option("--seed", relax.seed, "Random seed of the shared start");
-    relaxCmd->add_option("--out", relax.out, "CSV file (default: standard output)");
+    relaxCmd->add_option("--seed", relax.seed, "Random seed of the shared start")
+        ->transform(wholeNumber(0, std::numeric_limits<long long>::max()));
+    relaxCmd->add_option("--out", relax.out, "CSV file (default: standard output)")->check(fileName());
 
-    CLI11_PARSE(app, argc, argv);
+    ScaleOutCli scaleOut(app);
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        if (e.get_exit_code() == 0) return app.exit(e); // --help: the help text, exit 0
+        std::cerr << "particlelab-cli: " << e.what() << "; see '" << helpCommand(app) << "'\n";
+        return kBadInput;
+    }
+    // The methods lab's sweeps write at the end: their file is checked before they start.
+    for (const std::string* out :
+         {&echo.out, &sweep.out, &stability.out, &fluid.out, &dsmc.out, &relax.out}) {
+        try {
+            if (!out->empty()) pl::checkOutputPath(*out);
+        } catch (const pl::FileError& e) {
+            std::cerr << "particlelab-cli: " << e.what() << "\n";
+            return kCannotWrite;
+        }
+    }
+    if (auto code = scaleOut.runChosen()) return *code;
     if (app.got_subcommand("stability")) return stabilityMap(stability);
     if (app.got_subcommand("fluid-sweep")) return fluidSweep(fluid);
     if (app.got_subcommand("dsmc-sweep")) return dsmcSweep(dsmc);

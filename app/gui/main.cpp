@@ -1,11 +1,14 @@
 // particlelab: the desktop application.
 // Usage: particlelab [PRESET|FILE] [--backend cpu|gl|auto] [--screenshot FILE [--frames N]]
-//                    [--measure-fps SECONDS]
+//                    [--measure-fps SECONDS] [--present]
 //        particlelab --lab PAGE --plot FILE [--csv FILE]   (a methods-lab page, no window)
+#include "Autosave.h"
 #include "ExperimentDocument.h"
 #include "MainWindow.h"
 #include "SimulationController.h"
+#include "i18n/Translations.h"
 #include "methods/LabBatch.h"
+#include "present/PresentMode.h"
 #include "viewport/ViewportCore.h"
 
 #include <QApplication>
@@ -22,6 +25,7 @@ int main(int argc, char** argv) {
     QApplication::setOrganizationName("ParticleLab");
     QApplication::setDesktopFileName("particlelab");
     QApplication::setWindowIcon(QIcon::fromTheme("particlelab", QIcon(":/icons/particlelab.svg")));
+    pl::ui::installLanguage(pl::ui::savedLanguage()); // before any widget is made: they translate once
     QCommandLineParser parser;
     parser.setApplicationDescription("ParticleLab: an interactive physics lab of particles");
     parser.addHelpOption();
@@ -33,6 +37,8 @@ int main(int argc, char** argv) {
     const QCommandLineOption measureFps(
         "measure-fps", "Run for this many seconds as a user would, print the frame rate and quit.",
         "seconds");
+    const QCommandLineOption present(
+        "present", "Open in present mode: full screen, the viewport, one plot and a lesson's controls.");
     const QCommandLineOption backend("backend", "Compute backend: cpu, gl or auto (default: as last chosen).",
                                      "name");
     const QCommandLineOption lab(
@@ -49,6 +55,7 @@ int main(int argc, char** argv) {
     parser.addOption(screenshot);
     parser.addOption(frames);
     parser.addOption(measureFps);
+    parser.addOption(present);
     parser.process(app);
     const QStringList args = parser.positionalArguments();
     if (parser.isSet(lab)) {
@@ -74,6 +81,8 @@ int main(int argc, char** argv) {
     if (!window.document()->open(args.isEmpty() ? QStringLiteral("gas-seed") : args.first(), true)) return 2;
     window.resize(1280, 800);
     window.show();
+    if (!parser.isSet(screenshot) && !parser.isSet(measureFps)) window.autosave()->offerRestore();
+    if (parser.isSet(present)) window.presentMode()->setActive(true);
     if (parser.isSet(screenshot)) {
         for (int f = 0; f < parser.value(frames).toInt(); ++f) window.controller()->advanceFrame();
         QApplication::processEvents(); // let queued plot replots and repaints run

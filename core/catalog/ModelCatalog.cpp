@@ -1,6 +1,8 @@
 // Model registry and built-in presets.
 #include "ModelCatalog.h"
 
+#include "common/AtomicFile.h"
+
 #include "common/EmbeddedFiles.h"
 #include "dsmc/DsmcModel.h"
 #include "md/MdModel.h"
@@ -64,6 +66,23 @@ std::unique_ptr<Model> instantiate(const Preset& preset) {
     if (!model) throw PresetError("model", "unknown model \"" + preset.model + "\"");
     model->reset(preset);
     return model;
+}
+
+std::unique_ptr<Model> instantiate(const Snapshot& snapshot) {
+    auto model = instantiate(snapshot.preset);
+    model->restoreState(snapshot.state);
+    return model;
+}
+
+bool isSnapshotFile(const std::string& path) {
+    for (const auto& p : builtinPresets())
+        if (p.name == path) return false;
+    if (!std::filesystem::is_regular_file(path)) return false;
+    try {
+        return isSnapshotJson(readWholeFile(path));
+    } catch (const FileError&) {
+        return false; // reading it as a preset then reports why
+    }
 }
 
 } // namespace pl

@@ -4,6 +4,7 @@
 
 #include "common/Model.h"
 #include "common/Preset.h"
+#include "common/Snapshot.h"
 
 #include <memory>
 #include <string>
@@ -36,5 +37,11 @@ Preset loadPreset(const std::string& nameOrPath);
 
 // Validates a preset against its model's cross-field rules by resetting a scratch model. Throws PresetError.
 std::unique_ptr<Model> instantiate(const Preset& preset);
+// A model reset from the snapshot's preset, then given its state: it continues where the snapshot was
+// taken. Throws PresetError.
+std::unique_ptr<Model> instantiate(const Snapshot& snapshot);
+
+// Whether the file at path is a snapshot (else it is read as a preset). False for a built-in name.
+bool isSnapshotFile(const std::string& path);
 
 } // namespace pl

@@ -1,52 +1,170 @@
-// POSIX implementation of atomic file replacement (write, fsync, rename).
+// POSIX implementation of safe file writes: atomic replacement (write, fsync, rename, fsync the folder)
+// and unbuffered streaming, both through symbolic links and never over a file that is not regular.
 #include "AtomicFile.h"
 
 #include <cerrno>
 #include <cstring>
+#include <ctime>
+#include <dirent.h>
 #include <fcntl.h>
 #include <fstream>
 #include <sstream>
+#include <sys/file.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
 namespace pl {
 
 namespace {
+
+// Temporary files are named target + kTempMark + six characters of mkstemp; a writer holds an exclusive
+// flock on its own while it lives, so one that nobody holds belongs to a process that died.
+constexpr const char* kTempMark = ".tmp-";
+constexpr int kTempRandom = 6;
+// A temporary file this young may belong to a writer between mkstemp and flock: it is left alone.
+constexpr std::time_t kStaleSeconds = 10;
+constexpr int kMaxLinkHops = 40; // as the kernel's own limit on a chain of links
+
 std::string systemReason() {
     return std::strerror(errno);
 }
-} // namespace
 
-void writeFileAtomically(const std::string& path, std::string_view content) {
-    std::string temp = path + ".XXXXXX";
+std::string folderOf(const std::string& path) {
+    const auto slash = path.rfind('/');
+    if (slash == std::string::npos) return ".";
+    return slash == 0 ? "/" : path.substr(0, slash);
+}
+
+std::string nameOf(const std::string& path) {
+    const auto slash = path.rfind('/');
+    return slash == std::string::npos ? path : path.substr(slash + 1);
+}
+
+std::string kindOf(mode_t mode) {
+    if (S_ISDIR(mode)) return "a directory";
+    if (S_ISFIFO(mode)) return "a FIFO";
+    if (S_ISCHR(mode)) return "a character device";
+    if (S_ISBLK(mode)) return "a block device";
+    if (S_ISSOCK(mode)) return "a socket";
+    return "not a regular file";
+}
+
+// Flushes the folder's entry of a renamed file; a file system that cannot (EINVAL) has nothing to flush.
+void syncFolder(const std::string& folder) {
+    const int fd = ::open(folder.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    if (fd < 0) return;
+    ::fsync(fd);
+    ::close(fd);
+}
+
+bool isTempName(const std::string& entry, const std::string& base) {
+    const std::string prefix = base + kTempMark;
+    if (entry.size() != prefix.size() + kTempRandom || entry.compare(0, prefix.size(), prefix) != 0)
+        return false;
+    for (std::size_t i = prefix.size(); i < entry.size(); ++i) {
+        const char c = entry[i];
+        if (!((c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9'))) return false;
+    }
+    return true;
+}
+
+// Removes temporary files of target that no living writer holds and that are not brand new.
+void removeStaleTemps(const std::string& target) {
+    const std::string folder = folderOf(target), base = nameOf(target);
+    DIR* dir = ::opendir(folder.c_str());
+    if (!dir) return;
+    const std::time_t now = std::time(nullptr);
+    while (const dirent* entry = ::readdir(dir)) {
+        const std::string name = entry->d_name;
+        if (!isTempName(name, base)) continue;
+        const std::string path = folder + "/" + name;
+        struct stat st {};
+        if (::lstat(path.c_str(), &st) != 0 || !S_ISREG(st.st_mode) || now - st.st_mtime < kStaleSeconds)
+            continue;
+        const int fd = ::open(path.c_str(), O_RDONLY | O_NOFOLLOW | O_CLOEXEC);
+        if (fd < 0) continue;
+        if (::flock(fd, LOCK_EX | LOCK_NB) == 0) ::unlink(path.c_str());
+        ::close(fd);
+    }
+    ::closedir(dir);
+}
+
+// A new temporary file beside target, locked; returns its descriptor and fills temp, or throws.
+int createTemp(const std::string& path, const std::string& target, std::string& temp) {
+    temp = target + kTempMark + std::string(kTempRandom, 'X');
     const int fd = ::mkstemp(temp.data());
     if (fd < 0) throw FileError("cannot write '" + path + "': " + systemReason());
+    ::flock(fd, LOCK_EX);
+    return fd;
+}
+
+} // namespace
+
+std::string outputTarget(const std::string& path) {
+    if (path.empty()) throw FileError("cannot write a file without a name");
+    std::string current = path;
+    for (int hop = 0; hop < kMaxLinkHops; ++hop) {
+        struct stat st {};
+        if (::lstat(current.c_str(), &st) != 0) {
+            if (errno == ENOENT) return current; // a new file (or the missing target of a link)
+            throw FileError("cannot write '" + path + "': " + systemReason());
+        }
+        if (S_ISREG(st.st_mode)) return current;
+        if (!S_ISLNK(st.st_mode))
+            throw FileError("will not write '" + path + "': " + (current == path ? "it" : current) + " is " +
+                            kindOf(st.st_mode) + ", and only regular files are written");
+        std::string link(static_cast<std::size_t>(st.st_size > 0 ? st.st_size : 4096) + 1, '\0');
+        const ssize_t n = ::readlink(current.c_str(), link.data(), link.size());
+        if (n < 0) throw FileError("cannot write '" + path + "': " + systemReason());
+        link.resize(static_cast<std::size_t>(n));
+        current = link.front() == '/' ? link : folderOf(current) + "/" + link;
+    }
+    throw FileError("cannot write '" + path + "': too many levels of symbolic links");
+}
+
+void checkOutputPath(const std::string& path) {
+    const std::string target = outputTarget(path);
+    if (::access(target.c_str(), F_OK) == 0 && ::access(target.c_str(), W_OK) != 0)
+        throw FileError("cannot write '" + path + "': " + systemReason());
+    std::string temp;
+    const int fd = createTemp(path, target, temp);
+    ::close(fd);
+    ::unlink(temp.c_str());
+}
+
+void writeFileAtomically(const std::string& path, std::string_view content) {
+    const std::string target = outputTarget(path);
+    removeStaleTemps(target);
+    struct stat existing {};
+    const bool replaces = ::stat(target.c_str(), &existing) == 0;
+    std::string temp;
+    const int fd = createTemp(path, target, temp);
+    auto fail = [&](const std::string& what) {
+        const std::string reason = systemReason();
+        ::close(fd);
+        ::unlink(temp.c_str());
+        throw FileError(what + " '" + path + "': " + reason);
+    };
     std::size_t written = 0;
     while (written < content.size()) {
         const ssize_t n = ::write(fd, content.data() + written, content.size() - written);
         if (n < 0) {
             if (errno == EINTR) continue;
-            const std::string reason = systemReason();
-            ::close(fd);
-            ::unlink(temp.c_str());
-            throw FileError("cannot write '" + path + "': " + reason);
+            fail("cannot write");
         }
         written += static_cast<std::size_t>(n);
     }
-    // mkstemp creates 0600; a saved document should carry the usual permissions.
-    const mode_t mask = ::umask(0);
-    ::umask(mask);
-    ::fchmod(fd, 0666 & ~mask);
-    if (::fsync(fd) != 0 || ::close(fd) != 0) {
-        const std::string reason = systemReason();
-        ::unlink(temp.c_str());
-        throw FileError("cannot write '" + path + "': " + reason);
+    // mkstemp creates 0600: the file keeps the permissions of the one it replaces, or gets the usual.
+    mode_t mode = existing.st_mode & 07777;
+    if (!replaces) {
+        mode = ::umask(0);
+        ::umask(mode);
+        mode = 0666 & ~mode;
     }
-    if (::rename(temp.c_str(), path.c_str()) != 0) {
-        const std::string reason = systemReason();
-        ::unlink(temp.c_str());
-        throw FileError("cannot replace '" + path + "': " + reason);
-    }
+    if (::fchmod(fd, mode) != 0 || ::fsync(fd) != 0) fail("cannot write");
+    if (::rename(temp.c_str(), target.c_str()) != 0) fail("cannot replace");
+    ::close(fd); // held until here: the lock tells cleaners the temporary file is alive
+    syncFolder(folderOf(target));
 }
 
 std::string readWholeFile(const std::string& path) {
@@ -56,6 +174,50 @@ std::string readWholeFile(const std::string& path) {
     buffer << in.rdbuf();
     if (in.bad()) throw FileError("cannot read '" + path + "': " + systemReason());
     return buffer.str();
+}
+
+StreamedFile::StreamedFile(const std::string& path) : path_(path) {
+    const std::string target = outputTarget(path);
+    // O_NONBLOCK: a FIFO put there since the check fails at once instead of waiting for a reader.
+    fd_ = ::open(target.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_NONBLOCK | O_NOFOLLOW | O_CLOEXEC, 0666);
+    if (fd_ < 0) throw FileError("cannot write '" + path + "': " + systemReason());
+    struct stat st {};
+    if (::fstat(fd_, &st) != 0 || !S_ISREG(st.st_mode)) {
+        ::close(fd_);
+        fd_ = -1;
+        throw FileError("will not write '" + path + "': it is " + kindOf(st.st_mode) +
+                        ", and only regular files are written");
+    }
+    ::fcntl(fd_, F_SETFL, ::fcntl(fd_, F_GETFL) & ~O_NONBLOCK);
+}
+
+StreamedFile::~StreamedFile() {
+    if (fd_ >= 0) ::close(fd_);
+}
+
+void StreamedFile::write(std::string_view text) {
+    if (fd_ < 0) throw FileError("cannot write '" + path_ + "': the file is closed");
+    std::size_t written = 0;
+    while (written < text.size()) {
+        const ssize_t n = ::write(fd_, text.data() + written, text.size() - written);
+        if (n < 0) {
+            if (errno == EINTR) continue;
+            throw FileError("cannot write '" + path_ + "': " + systemReason());
+        }
+        written += static_cast<std::size_t>(n);
+    }
+}
+
+void StreamedFile::close() {
+    if (fd_ < 0) return;
+    const int fd = fd_;
+    fd_ = -1;
+    if (::fsync(fd) != 0 && errno != EINVAL) {
+        const std::string reason = systemReason();
+        ::close(fd);
+        throw FileError("cannot write '" + path_ + "': " + reason);
+    }
+    if (::close(fd) != 0) throw FileError("cannot write '" + path_ + "': " + systemReason());
 }
 
 } // namespace pl

@@ -1,4 +1,5 @@
-// Writing files so that a crash or a full disk never leaves a half-written file behind.
+// Writing files so that a crash or a full disk never leaves a half-written file behind, and never
+// replaces what is not a regular file.
 #pragma once
 
 #include <stdexcept>
@@ -12,11 +13,45 @@ public:
     using std::runtime_error::runtime_error;
 };
 
-// Writes content to a temporary file beside path, flushes it to disk, then renames it over path.
-// Throws FileError naming the path and the system's reason; the old file stays intact on failure.
+// Where a write to path lands: path itself, or the file its symbolic link (chain) points to, since a
+// write goes through a link to its target and never replaces the link. Throws FileError when that
+// target exists and is not a regular file (a directory, FIFO, device or socket is never replaced).
+std::string outputTarget(const std::string& path);
+
+// Checks before a long run that path can be written: its target is absent or a regular file it may
+// write, and a file can be created beside it (one is created and removed). Throws FileError naming the
+// path and why.
+void checkOutputPath(const std::string& path);
+
+// Writes content to a temporary file beside the target (outputTarget), flushes it to disk, renames it
+// over the target and flushes the folder, so that the file is the old one or the new one, whole, even
+// after a crash. The target keeps its permissions (a new file gets 0666 less the umask). The temporary
+// file is removed on every failure, and temporary files of earlier writes to the same path that a
+// killed process left are removed first. Throws FileError naming the path and the system's reason; the
+// old file stays intact on failure.
 void writeFileAtomically(const std::string& path, std::string_view content);
 
 // Reads a whole file; throws FileError naming the path and the system's reason.
 std::string readWholeFile(const std::string& path);
+
+// A file written piece by piece where each piece reaches the operating system at once (no buffer in the
+// process), so a killed or interrupted process leaves every piece it wrote: the CLI's time series,
+// one row per sample. It opens the target (outputTarget) truncated, keeping its permissions, and
+// refuses a target that is not a regular file. Throws FileError naming the path.
+class StreamedFile {
+public:
+    explicit StreamedFile(const std::string& path);
+    ~StreamedFile();
+    StreamedFile(const StreamedFile&) = delete;
+    StreamedFile& operator=(const StreamedFile&) = delete;
+
+    void write(std::string_view text);
+    // Flushes to disk and closes; throws FileError when the data may not be there.
+    void close();
+
+private:
+    std::string path_;
+    int fd_ = -1;
+};
 
 } // namespace pl

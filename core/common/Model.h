@@ -6,6 +6,7 @@
 #include "Preset.h"
 #include "SceneTools.h"
 #include "SceneView.h"
+#include "StateRecord.h"
 
 #include <cstdint>
 #include <functional>
@@ -57,6 +58,13 @@ public:
     virtual void reset() = 0;
     virtual Preset toPreset() const = 0;
 
+    // Everything a snapshot keeps beyond toPreset(): particles, time, counters, and the caches whose order
+    // decides the rounding of the next steps (core/common/Snapshot.h). restoreState() follows a
+    // reset(toPreset()) of a model of the same kind, so that continuing is bit-identical on the CPU;
+    // it throws PresetError naming the entry ("state.x") and leaves the model reset on failure.
+    virtual StateRecord saveState() const = 0;
+    virtual void restoreState(const StateRecord& state) = 0;
+
     // Advances by one signed time step. Does nothing once failure() is set.
     virtual void step() = 0;
     virtual std::int64_t stepCount() const = 0;
@@ -67,6 +75,13 @@ public:
     virtual std::int64_t plannedSteps() const { return 0; }
     // Whether a negative time step runs the dynamics backwards (stochastic collisions cannot).
     virtual bool reversible() const { return true; }
+    // Checks the state now, as the model otherwise does on its own schedule (the gas: energy every 64
+    // steps), and sets failure() when it has blown up; a caller runs it before it records a sample and at
+    // the end of a run, so that no exploded row is kept and no run ends well with a runaway state.
+    virtual void checkHealthNow() {}
+    // A sentence when the current parameters make the method inaccurate though it still runs (DSMC: ν Δt
+    // above Bird's guideline), naming what to change; empty otherwise.
+    virtual std::string accuracyWarning() const { return {}; }
 
     // One row of observables per call, matching seriesColumns(); may close accumulation windows.
     virtual std::vector<std::string> seriesColumns() const = 0;

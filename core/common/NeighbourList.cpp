@@ -93,6 +93,16 @@ void NeighbourList::build(const double* x, const double* y, std::size_t count, d
     valid_ = true;
 }
 
+void NeighbourList::restore(Contents c) {
+    offsets_ = std::move(c.offsets);
+    entries_ = std::move(c.entries);
+    payload_ = std::move(c.payload);
+    builtX_ = std::move(c.builtX);
+    builtY_ = std::move(c.builtY);
+    skin_ = c.skin;
+    valid_ = c.valid;
+}
+
 void NeighbourList::permute(const std::vector<std::uint32_t>& newToOld) {
     if (!valid_) return;
     const std::size_t count = newToOld.size();

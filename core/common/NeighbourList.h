@@ -31,6 +31,18 @@ public:
     // payload and build positions are renumbered, so the list stays valid without a rebuild.
     void permute(const std::vector<std::uint32_t>& newToOld);
 
+    // The whole list, for snapshots: a list that was permuted is not what a fresh build would give, so
+    // an exact continuation needs these rows as they are.
+    struct Contents {
+        std::vector<std::uint32_t> offsets, entries;
+        std::vector<std::uint8_t> payload;
+        std::vector<double> builtX, builtY;
+        double skin = 0.0;
+        bool valid = false;
+    };
+    Contents contents() const { return {offsets_, entries_, payload_, builtX_, builtY_, skin_, valid_}; }
+    void restore(Contents c);
+
     // Neighbours of i are entries()[offsets()[i] … offsets()[i + 1]).
     const std::uint32_t* offsets() const { return offsets_.data(); }
     const std::uint32_t* entries() const { return entries_.data(); }

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <charconv>
 #include <cmath>
 #include <cstdlib>
 #include <sstream>
@@ -12,10 +13,37 @@ namespace pl {
 namespace {
 
 std::string number(double v) {
-    std::ostringstream out;
-    out.precision(12);
-    out << v;
-    return out.str();
+    return formatNumber(v, 12);
+}
+
+bool isKeyChar(char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+}
+
+// Calls write(key, quoted) for every {key} and '{key}' in message and puts its result in their place.
+std::string replaceMarks(std::string_view message,
+                         const std::function<std::string(const std::string&, bool quoted)>& write) {
+    std::string out;
+    std::size_t i = 0;
+    while (i < message.size()) {
+        const std::size_t open = message[i] == '\'' && i + 1 < message.size() ? i + 1 : i;
+        std::size_t close = open + 1;
+        while (close < message.size() && isKeyChar(message[close])) ++close;
+        const bool isMark =
+            message[open] == '{' && close > open + 1 && close < message.size() && message[close] == '}';
+        const bool quoted = isMark && open > i && close + 1 < message.size() && message[close + 1] == '\'';
+        if (!isMark || (open > i && !quoted)) {
+            out += message[i++];
+            continue;
+        }
+        out += write(std::string(message.substr(open + 1, close - open - 1)), quoted);
+        i = close + (quoted ? 2 : 1);
+    }
+    return out;
+}
+
+std::string mark(const std::string& key) {
+    return "'{" + key + "}' ";
 }
 
 std::string kindName(ParamKind kind) {
@@ -41,6 +69,27 @@ bool isHexColor(const std::string& s) {
 }
 
 } // namespace
+
+std::string nameParameters(std::string_view message,
+                           const std::function<std::string(const std::string&)>& name) {
+    return replaceMarks(message, [&](const std::string& key, bool quoted) {
+        (void)quoted; // a label needs no quotes
+        return name(key);
+    });
+}
+
+std::string withKeys(std::string_view message) {
+    // The command line has always quoted a key where the message marks it '{key}': keep the quotes.
+    return replaceMarks(message,
+                        [](const std::string& key, bool quoted) { return quoted ? "'" + key + "'" : key; });
+}
+
+std::string formatNumber(double v, int significant) {
+    std::ostringstream out;
+    out.precision(significant);
+    out << v;
+    return out.str();
+}
 
 ParamSpec makeSpec(std::string key, std::string label, std::string unit, std::string group,
                    std::string tooltip, double min, double max, double step, ParamValue defaultValue,
@@ -91,7 +140,11 @@ std::string describeAllowed(const ParamSpec& spec) {
 }
 
 std::string checkValue(const ParamSpec& spec, const ParamValue& value) {
-    const std::string prefix = "'" + spec.key + "' ";
+    return withKeys(describeProblem(spec, value));
+}
+
+std::string describeProblem(const ParamSpec& spec, const ParamValue& value) {
+    const std::string prefix = mark(spec.key);
     const std::string allowed = "allowed: " + describeAllowed(spec);
     switch (spec.kind) {
     case ParamKind::Real:
@@ -133,18 +186,24 @@ ParamValue parseValue(const ParamSpec& spec, std::string_view text) {
     case ParamKind::Real:
     case ParamKind::Integer: {
         const std::string s(text);
-        char* end = nullptr;
-        const double v = std::strtod(s.c_str(), &end);
-        if (s.empty() || end != s.c_str() + s.size())
-            throw ParamError(spec.key, "'" + spec.key + "' must be " + kindName(spec.kind) + ", got \"" + s +
+        // Decimal notation only, the whole text: strtod alone would take " 1" and "0x10" as well.
+        const char* begin = s.data() + (!s.empty() && s[0] == '+' ? 1 : 0);
+        const char* last = s.data() + s.size();
+        double v = 0.0;
+        const auto [stop, error] = std::from_chars(begin, last, v);
+        const bool signedTwice = begin != s.data() && begin != last && *begin == '-';
+        if (s.empty() || signedTwice || stop != last ||
+            (error != std::errc() && error != std::errc::result_out_of_range))
+            throw ParamError(spec.key, mark(spec.key) + "must be " + kindName(spec.kind) + ", got \"" + s +
                                            "\" (allowed: " + describeAllowed(spec) + ")");
+        if (error == std::errc::result_out_of_range) v = std::strtod(s.c_str(), nullptr); // ±inf or ~0
         return v; // range, NaN and integrality are checkValue's job
     }
     case ParamKind::Boolean: {
         if (text == "true" || text == "1" || text == "on" || text == "yes") return true;
         if (text == "false" || text == "0" || text == "off" || text == "no") return false;
         throw ParamError(spec.key,
-                         "'" + spec.key + "' must be true or false, got \"" + std::string(text) + "\"");
+                         mark(spec.key) + "must be true or false, got \"" + std::string(text) + "\"");
     }
     case ParamKind::Choice:
     case ParamKind::Color:

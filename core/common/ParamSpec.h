@@ -33,15 +33,28 @@ struct ParamSpec {
     bool appliesLive = false;         // false: takes effect on the next reset
 };
 
-// A parameter value that failed validation; key() names the offending parameter.
+// Messages about parameters name them as {key}, or as '{key}' where the command line quotes the key.
+// withKeys writes the keys themselves (presets, the command line); nameParameters lets a front end
+// write each parameter its own way (the panel uses the spec's label, and drops the quotes).
+std::string withKeys(std::string_view message);
+std::string nameParameters(std::string_view message,
+                           const std::function<std::string(const std::string&)>& name);
+
+// v with `significant` significant digits, so a small value never reads as 0 ("1.5e-05", "0.0123").
+std::string formatNumber(double v, int significant = 6);
+
+// A parameter value that failed validation; key() names the offending parameter. what() names every
+// parameter by its key; message() keeps the {key} marks for nameParameters.
 class ParamError : public std::runtime_error {
 public:
     ParamError(std::string key, const std::string& message)
-        : std::runtime_error(message), key_(std::move(key)) {}
+        : std::runtime_error(withKeys(message)), key_(std::move(key)), message_(message) {}
     const std::string& key() const { return key_; }
+    const std::string& message() const { return message_; }
 
 private:
     std::string key_;
+    std::string message_;
 };
 
 // A Real spec (models turn it into Integer or Boolean through the bind* helpers below).
@@ -55,7 +68,9 @@ ParamSpec makeChoice(std::string key, std::string label, std::string group, std:
 // "[1e-06, 1000] M" or "one of: a, b, c" — used in every error message about a value.
 std::string describeAllowed(const ParamSpec& spec);
 
-// Empty when value is acceptable for spec, else a sentence naming the key, the value and what is allowed.
+// Empty when value is acceptable for spec, else a sentence naming the parameter as '{key}', the value
+// and what is allowed (see nameParameters); checkValue writes the key itself.
+std::string describeProblem(const ParamSpec& spec, const ParamValue& value);
 std::string checkValue(const ParamSpec& spec, const ParamValue& value);
 
 // Parses command-line text ("0.5", "true", "rk4") into a value of spec's kind; throws ParamError.
@@ -117,7 +132,8 @@ P withValues(const P& base, const std::vector<ParamField<P>>& fields, const Para
         for (const auto& f : fields)
             if (f.spec.key == key) field = &f;
         if (!field) throw ParamError(key, "unknown parameter '" + key + "'");
-        if (auto problem = checkValue(field->spec, value); !problem.empty()) throw ParamError(key, problem);
+        if (auto problem = describeProblem(field->spec, value); !problem.empty())
+            throw ParamError(key, problem);
         checked.emplace_back(field, &value);
     }
     P result = base;

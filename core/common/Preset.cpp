@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <nlohmann/json.hpp>
+#include <set>
 
 namespace pl {
 
@@ -26,6 +27,75 @@ void requireOnlyKeys(const Json& object, const std::vector<std::string>& allowed
         fail(source, where + key, "unknown key '" + where + key + "' (allowed: " + list + ")");
     }
 }
+
+// A first pass over the text that finds a key given twice in one object, which the parser would keep
+// silently (the last one wins): its path, "params.dt" or "obstacles[1].x", or "" when there is none.
+class DuplicateKeyFinder : public nlohmann::json_sax<Json> {
+public:
+    static std::string find(std::string_view text) {
+        DuplicateKeyFinder finder;
+        Json::sax_parse(text, &finder);
+        return finder.duplicate_;
+    }
+
+    bool null() override { return element(); }
+    bool boolean(bool) override { return element(); }
+    bool number_integer(number_integer_t) override { return element(); }
+    bool number_unsigned(number_unsigned_t) override { return element(); }
+    bool number_float(number_float_t, const string_t&) override { return element(); }
+    bool string(string_t&) override { return element(); }
+    bool binary(binary_t&) override { return element(); }
+    bool start_object(std::size_t) override {
+        element();
+        frames_.push_back({true, {}, {}, -1});
+        return true;
+    }
+    bool key(string_t& key) override {
+        Frame& frame = frames_.back();
+        if (!frame.keys.insert(key).second) {
+            const std::string parent = pathTo(frames_.size() - 1);
+            duplicate_ = parent.empty() ? key : parent + "." + key;
+            return false; // stops the pass
+        }
+        frame.key = key;
+        return true;
+    }
+    bool end_object() override { return leave(); }
+    bool start_array(std::size_t) override {
+        element();
+        frames_.push_back({false, {}, {}, -1});
+        return true;
+    }
+    bool end_array() override { return leave(); }
+    bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception&) override {
+        return false; // syntax errors are the real parser's to report
+    }
+
+private:
+    struct Frame {
+        bool object;
+        std::set<std::string> keys;
+        std::string key; // of the member being read (objects)
+        long long index; // of the element being read (arrays)
+    };
+    bool element() {
+        if (!frames_.empty() && !frames_.back().object) ++frames_.back().index;
+        return true;
+    }
+    bool leave() {
+        frames_.pop_back();
+        return true;
+    }
+    std::string pathTo(std::size_t depth) const {
+        std::string path;
+        for (std::size_t i = 0; i < depth; ++i)
+            path += frames_[i].object ? (path.empty() ? "" : ".") + frames_[i].key
+                                      : "[" + std::to_string(frames_[i].index) + "]";
+        return path;
+    }
+    std::vector<Frame> frames_;
+    std::string duplicate_;
+};
 
 std::string jsonTypeName(const Json& v) {
     return v.type_name();
@@ -105,6 +175,8 @@ OrderedJson valueToJson(const ParamSpec& spec, const ParamValue& value) {
 
 Preset parsePreset(std::string_view text, const SpecLookup& specsFor, const std::string& source) {
     Json root;
+    if (const std::string duplicate = DuplicateKeyFinder::find(text); !duplicate.empty())
+        fail(source, duplicate, "duplicate key '" + duplicate + "': each key may be given only once");
     try {
         root = Json::parse(text);
     } catch (const Json::exception& e) { // syntax errors, and numbers beyond double range ("1e999")

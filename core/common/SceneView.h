@@ -47,6 +47,7 @@ struct SceneView {
     std::vector<Obstacle> obstacles;
     std::optional<double> pistonX;   // a vertical wall from bottom to top at this x
     std::string hint;                // faint instruction across the view (e.g. while a tank is empty)
+    bool dragPours = false;          // with the Drag tool, dragging empty space spawns (the fluid seed)
     std::optional<GpuParticles> gpu; // set instead of x, y, radius, value by sceneViewSharingGpu()
 
     std::size_t size() const { return x.size(); }

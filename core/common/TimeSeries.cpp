@@ -21,7 +21,10 @@ void TimeSeries::writeCsvHeader(std::ostream& out) const {
 }
 
 void TimeSeries::writeCsvRow(std::ostream& out, std::size_t i) const {
-    const auto& r = rows_[i];
+    writeCsvRow(out, rows_[i]);
+}
+
+void TimeSeries::writeCsvRow(std::ostream& out, const std::vector<double>& r) {
     for (std::size_t c = 0; c < r.size(); ++c) {
         if (c) out << ',';
         if (std::isnan(r[c]))

@@ -24,6 +24,8 @@ public:
     void writeCsv(std::ostream& out) const;
     void writeCsvHeader(std::ostream& out) const;
     void writeCsvRow(std::ostream& out, std::size_t i) const;
+    // One row as CSV in out's precision, for a writer that streams rows instead of keeping them.
+    static void writeCsvRow(std::ostream& out, const std::vector<double>& row);
 
 private:
     std::vector<std::string> columns_;

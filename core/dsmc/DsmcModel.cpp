@@ -8,6 +8,25 @@
 
 namespace pl {
 
+namespace {
+
+// Bird's guideline: the time step a small fraction of the mean collision time, here ν Δt ≤ 0.25. Above
+// it collisions within a step are too many for the method to be accurate away from one uniform cell.
+constexpr double kGuidelineNuDt = 0.25;
+// Refused above this: each particle would be picked as a candidate more than 5 times a step, the cost of
+// a step grows as N ν Δt / 2 candidates (1e8 for the dsmc-bkw preset at dt = 3.33) and no result is
+// worth it.
+constexpr double kRefusedNuDt = 10.0;
+
+// The dt and the F_N that bring ν Δt from nuDt down to the guideline.
+std::string whatToChange(const DsmcParams& p, double nuDt) {
+    const double factor = kGuidelineNuDt / nuDt;
+    return "use {dt} ≤ " + formatNumber(p.dt * factor, 3) + " s (now " + formatNumber(p.dt, 3) +
+           ") or {fn} ≤ " + formatNumber(p.fn * factor, 3) + " (now " + formatNumber(p.fn, 3) + ")";
+}
+
+} // namespace
+
 DsmcModel::DsmcModel() {
     reset();
 }
@@ -19,6 +38,7 @@ ParamValues DsmcModel::params() const {
 void DsmcModel::setParams(const ParamValues& values) {
     DsmcParams next = withValues(params_, DsmcParams::fields(), values);
     next.validate();
+    if (const std::string why = nuDtRefusal(next); !why.empty()) throw ParamError("dt", why);
     params_ = next;
     collisions_ = CollisionModel::fromParams(params_);
 }
@@ -34,9 +54,42 @@ void DsmcModel::reset(const Preset& preset) {
     } catch (const ParamError& e) {
         throw PresetError("params." + e.key(), e.what());
     }
+    const DsmcParams previous = params_;
+    const std::uint64_t previousSeed = seed_;
     params_ = next;
     seed_ = preset.seed;
     reset();
+    if (const std::string why = nuDtRefusal(params_); !why.empty()) {
+        params_ = previous; // a refused preset leaves the model as it was
+        seed_ = previousSeed;
+        reset();
+        throw PresetError("params.dt", withKeys(why));
+    }
+}
+
+double DsmcModel::nuDtBound(const DsmcParams& p) const {
+    const double n = static_cast<double>(state_.size());
+    return (n - 1.0) * p.fn * sigmaCrMax_ * p.dt / p.cellVolume;
+}
+
+std::string DsmcModel::nuDtRefusal(const DsmcParams& p) const {
+    const double nuDt = nuDtBound(p);
+    if (std::isfinite(nuDt) && nuDt <= kRefusedNuDt) return {};
+    return "ν Δt = " + formatNumber(nuDt, 3) + " collisions per particle and step (" +
+           formatNumber(0.5 * static_cast<double>(state_.size()) * nuDt, 3) +
+           " candidate pairs a step) is more than the " + formatNumber(kRefusedNuDt, 3) +
+           " a step can do in reasonable time; " + whatToChange(p, nuDt) + " to keep it below Bird's " +
+           "guideline of " + formatNumber(kGuidelineNuDt, 2);
+}
+
+std::string DsmcModel::accuracyWarning() const {
+    const double nuDt = nuDtBound(params_);
+    if (!(nuDt > kGuidelineNuDt)) return {};
+    return withKeys("ν Δt is up to " + formatNumber(nuDt, 3) +
+                    " collisions per particle and step, above Bird's guideline of " +
+                    formatNumber(kGuidelineNuDt, 2) +
+                    " (Δt a small fraction of the mean collision time), so the result may depend on Δt; " +
+                    whatToChange(params_, nuDt));
 }
 
 void DsmcModel::reset() {
@@ -92,11 +145,12 @@ void DsmcModel::step() {
     // fractional part carried to the next step so the long-run rate has no rounding bias.
     const double wanted =
         0.5 * n * (n - 1.0) * params_.fn * sigmaCrMax_ * dt / params_.cellVolume + remainder_;
-    if (!std::isfinite(wanted) || wanted > 1e12) {
-        failure_ = ModelFailure{
-            "the candidate count " + std::to_string(wanted) + " is not finite or too large", step_, time_,
-            "lower dt, fn or the number of particles, or raise cell_volume; ν Δt should stay "
-            "well below 1"};
+    // (σ c_r)_max only grows during a run, and with it the candidates: a run accepted at its start can
+    // outgrow what a step can do.
+    if (const std::string why = nuDtRefusal(params_); !std::isfinite(wanted) || !why.empty()) {
+        failure_ =
+            ModelFailure{"the candidate count " + formatNumber(wanted, 3) + " is not finite or too large",
+                         step_, time_, withKeys(why)};
         return;
     }
     candidates_ = static_cast<long long>(wanted);

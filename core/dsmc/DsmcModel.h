@@ -39,6 +39,7 @@ public:
     double time() const override { return time_; }
     std::size_t particleCount() const override { return state_.size(); }
     std::optional<ModelFailure> failure() const override { return failure_; }
+    std::string accuracyWarning() const override;
     std::int64_t plannedSteps() const override { return params_.runSteps; }
     bool reversible() const override { return false; }
     std::vector<std::string> seriesColumns() const override;
@@ -46,6 +47,8 @@ public:
     std::vector<NamedHistogram> histograms() const override;
     void writeParticles(std::ostream& out) const override;
     SceneView sceneView() const override;
+    StateRecord saveState() const override; // DsmcSnapshot.cpp
+    void restoreState(const StateRecord& state) override;
 
     // DSMC-specific API
     const DsmcParams& parameters() const { return params_; }
@@ -60,6 +63,11 @@ private:
     void addPopulation(long long count, double drift, std::uint8_t origin, std::uint32_t stream);
     void addBkwPopulation(long long count);
     void estimateSigmaCrMax();
+    // ν_max Δt = (N − 1) F_N (σ c_r)_max Δt / V_c: collisions per particle and step at most (twice the
+    // NTC candidates per particle), for p with the current state and (σ c_r)_max.
+    double nuDtBound(const DsmcParams& p) const;
+    // Empty when p keeps ν_max Δt within what a step can do, else why not and what to change.
+    std::string nuDtRefusal(const DsmcParams& p) const;
 
     DsmcParams params_;
     std::uint64_t seed_ = 1;

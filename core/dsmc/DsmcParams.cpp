@@ -17,14 +17,15 @@ void DsmcParams::validate() const {
     const long long n = totalCount();
     if (n < 2)
         throw ParamError("count_1",
-                         "a DSMC cell needs at least 2 particles to collide (count_1 + count_2 = " +
+                         "a DSMC cell needs at least 2 particles to collide ({count_1} + {count_2} = " +
                              std::to_string(n) + ")");
     if (static_cast<double>(n) > kMaxParticles)
         throw ParamError("count_1", std::to_string(n) + " particles exceed the limit of " +
                                         std::to_string(static_cast<long long>(kMaxParticles)));
     if (velocityComponents != 2 && velocityComponents != 3)
-        throw ParamError("velocity_components", "must be 2 (in the plane) or 3 (in space), not " +
-                                                    std::to_string(velocityComponents));
+        throw ParamError("velocity_components",
+                         "'{velocity_components}' must be 2 (in the plane) or 3 (in space), not " +
+                             std::to_string(velocityComponents));
     if (planar() && initial == "bkw")
         throw ParamError("velocity_components",
                          "the BKW solution is for 3 velocity components; use 3, or another initial state");

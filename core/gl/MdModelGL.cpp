@@ -312,12 +312,13 @@ void MdModelGL::step() {
         return;
     }
     gpu_->context->makeCurrent();
+    const double h = params_.dt;
+    advanceBodies(h);                             // on the CPU: a handful of bodies
     uploadObstacles(gpu_->obstacles, obstacles_); // they move between steps, never within one
     if (!gpu_->gpuCurrent) upload();
     gpu_->dispatches = 0;
     gpu_->mark("start");
     driftIndex_ = 0;
-    const double h = params_.dt;
     // The same splittings as MdIntegrators.cpp, stage for stage.
     switch (integrator_) {
     case MdIntegrator::VelocityVerlet:

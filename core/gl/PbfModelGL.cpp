@@ -172,6 +172,7 @@ void PbfModelGL::step() {
     }
     g.dispatches = 0;
     const std::size_t n = g.count;
+    advanceBodies(); // on the CPU: a handful of bodies
     uploadObstacles(g.obstacles, obstacles_);
     const double gx = params_.gravity ? params_.gravityX : 0.0, gy = params_.gravity ? params_.gravityY : 0.0;
 

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <stdexcept>
 
 namespace pl {
@@ -33,8 +34,10 @@ void MdModel::setParams(const ParamValues& values) {
     const MdParams before = params_;
     params_ = next;
     integrator_ = integratorFromName(params_.integrator);
-    if (params_.pistonEnabled != before.pistonEnabled || params_.pistonX != before.pistonX)
+    if (params_.pistonEnabled != before.pistonEnabled || params_.pistonX != before.pistonX) {
         pistonVelocity_ = 0.0;
+        pistonDrive_.stop();
+    }
     if (params_.maxDiameter() != before.maxDiameter()) neighbours_.invalidate();
     forcesValid_ = false; // stiffness, gravity or the force method may have changed
     ensureForces();
@@ -76,6 +79,8 @@ void MdModel::reset() {
     failure_.reset();
     wallWindow_.clear();
     for (auto& o : obstacles_) o.vx = o.vy = 0.0;
+    obstacleDrive_.clear();
+    pistonDrive_.stop();
     buildInitialState();
     neighbours_.invalidate();
     forcesValid_ = false;
@@ -106,6 +111,7 @@ void MdModel::step() {
     }
     driftIndex_ = 0;
     const double h = params_.dt;
+    advanceBodies(h);
     switch (integrator_) {
     case MdIntegrator::VelocityVerlet:
         stepVelocityVerlet(h);
@@ -161,24 +167,83 @@ void MdModel::addObstacle(const Obstacle& obstacle) {
 void MdModel::removeObstacle(std::size_t index) {
     if (index >= obstacles_.size()) throw std::out_of_range("no obstacle " + std::to_string(index));
     obstacles_.erase(obstacles_.begin() + static_cast<std::ptrdiff_t>(index));
+    obstacleDrive_.erase(index);
     rebaseEnergy();
 }
 
-void MdModel::moveObstacle(std::size_t index, double x, double y, double vx, double vy) {
+double MdModel::initialRmsSpeed() const {
+    const double rms = params_.initVelocity == "maxwell-boltzmann"
+                           ? std::sqrt(2.0 * params_.initKT / params_.a.mass)
+                           : params_.initSpeed;
+    return rms > 0 ? rms : 1.0;
+}
+
+double MdModel::toolSpeed() const {
+    return params_.toolSpeed * initialRmsSpeed();
+}
+
+void MdModel::dragObstacle(std::size_t index, double x, double y) {
     if (index >= obstacles_.size()) throw std::out_of_range("no obstacle " + std::to_string(index));
+    obstacleDrive_.drag(index, std::clamp(x, params_.left(), params_.right()),
+                        std::clamp(y, params_.bottom(), params_.top()));
+}
+
+void MdModel::releaseObstacle(std::size_t index) {
+    obstacleDrive_.release(index);
+}
+
+void MdModel::placeObstacle(std::size_t index, double x, double y) {
+    if (index >= obstacles_.size()) throw std::out_of_range("no obstacle " + std::to_string(index));
+    pullState();
     auto& o = obstacles_[index];
     o.x = std::clamp(x, params_.left(), params_.right());
     o.y = std::clamp(y, params_.bottom(), params_.top());
-    o.vx = vx;
-    o.vy = vy;
+    o.vx = o.vy = 0.0;
+    obstacleDrive_.stop(index);
     rebaseEnergy();
 }
 
-void MdModel::movePiston(double x, double velocity) {
+void MdModel::dragPiston(double x) {
     if (!params_.pistonEnabled) throw std::logic_error("the piston is not enabled (piston_enabled = false)");
-    params_.pistonX = std::clamp(x, params_.left() + params_.maxDiameter(), 0.5 * params_.boxWidth);
-    pistonVelocity_ = velocity;
+    pistonDrive_.dragTo(x);
+}
+
+void MdModel::drivePiston(int direction) {
+    if (!params_.pistonEnabled) throw std::logic_error("the piston is not enabled (piston_enabled = false)");
+    pistonDrive_.drive(direction);
+}
+
+void MdModel::placePiston(double x) {
+    if (!params_.pistonEnabled) throw std::logic_error("the piston is not enabled (piston_enabled = false)");
+    pullState();
+    params_.pistonX = std::clamp(x, pistonLower(), 0.5 * params_.boxWidth);
+    pistonDrive_.stop();
+    pistonVelocity_ = 0.0;
     rebaseEnergy();
+}
+
+double MdModel::pistonLower() const {
+    // Denser than this the soft disks overlap ever more deeply as the piston pushes: the gas becomes a
+    // jammed solid storing unbounded energy, so Compress stops at a dense liquid instead.
+    constexpr double kPistonMaxAreaFraction = 0.7;
+    const double covered = std::numbers::pi / 4 *
+                           (static_cast<double>(params_.a.count) * params_.a.diameter * params_.a.diameter +
+                            static_cast<double>(params_.b.count) * params_.b.diameter * params_.b.diameter);
+    return params_.left() +
+           std::max(params_.maxDiameter(), covered / (kPistonMaxAreaFraction * params_.boxHeight));
+}
+
+void MdModel::advanceBodies(double h) {
+    bool settled = false;
+    if (obstacleDrive_.moving()) settled = obstacleDrive_.advance(obstacles_, toolSpeed(), h);
+    if (params_.pistonEnabled) {
+        const bool wasMoving = pistonDrive_.moving();
+        pistonVelocity_ = pistonDrive_.advance(params_.pistonX, pistonLower(), 0.5 * params_.boxWidth,
+                                               toolSpeed(), params_.pistonSpeed * initialRmsSpeed(), h);
+        settled = settled || (wasMoving && !pistonDrive_.moving());
+    }
+    // The work a body did is now the system's energy, not integration drift.
+    if (settled) rebaseEnergy();
 }
 
 std::vector<std::string> MdModel::seriesColumns() const {

@@ -5,6 +5,7 @@
 #include "MdParams.h"
 #include "MdState.h"
 #include "common/CellList.h"
+#include "common/KinematicDrive.h"
 #include "common/Model.h"
 #include "common/NeighbourList.h"
 #include "common/Obstacle.h"
@@ -78,15 +79,21 @@ public:
     double time() const override { return time_; }
     std::size_t particleCount() const override { return state_.size(); }
     std::optional<ModelFailure> failure() const override { return failure_; }
+    void checkHealthNow() override { checkHealth(true); }
     std::vector<std::string> seriesColumns() const override;
     std::vector<double> sampleSeries() override;
     std::vector<NamedHistogram> histograms() const override;
     void writeParticles(std::ostream& out) const override;
     SceneView sceneView() const override;
     SceneTools* tools() override { return this; }
+    StateRecord saveState() const override; // MdSnapshot.cpp
+    void restoreState(const StateRecord& state) override;
 
     // SceneTools interface (the obstacle and piston functions below belong to it too)
     bool hasPiston() const override { return params_.pistonEnabled; }
+    double pistonX() const override { return params_.pistonX; }
+    double toolSpeed() const override;
+    bool bodiesMoving() const override { return obstacleDrive_.moving() || pistonDrive_.moving(); }
     std::string spawnInRectangle(double x0, double y0, double x1, double y1) override;
     void scaleKineticEnergy(double factor) override;
 
@@ -103,10 +110,16 @@ public:
     const std::vector<Obstacle>& obstacles() const override { return obstacles_; }
     void addObstacle(const Obstacle& obstacle) override;
     void removeObstacle(std::size_t index) override;
-    // Moves an obstacle between steps; velocity [L/T] is what it imparts on disks it hits.
-    void moveObstacle(std::size_t index, double x, double y, double vx, double vy) override;
-    // Moves the piston between steps with the given velocity [L/T]; x is clamped into the box.
-    void movePiston(double x, double velocity) override;
+    // Kinematic bodies (targets are clamped into the box): the step moves them at bounded speed.
+    void dragObstacle(std::size_t index, double x, double y) override;
+    void releaseObstacle(std::size_t index) override;
+    void placeObstacle(std::size_t index, double x, double y) override;
+    void dragPiston(double x) override;
+    void drivePiston(int direction) override;
+    int pistonDirection() const override { return pistonDrive_.direction(); }
+    void placePiston(double x) override;
+    // The initial rms speed of species A [L/T]: the scale of tool_speed, piston_speed and the colours.
+    double initialRmsSpeed() const;
 
     SpawnResult spawnRectangle(double x0, double y0, double x1, double y1, int species, double kT);
     SpawnResult spawnAt(double x, double y, int species, double kT);
@@ -146,6 +159,11 @@ protected:
     void refreshEnergies();
     void computeForcesAllPairs(Contacts contacts, double kickAfter);
     md::Boundaries boundaries(double h) const;
+    // Moves the dragged obstacles and the piston one step of h toward their targets (KinematicDrive.h).
+    void advanceBodies(double h);
+    // The piston's travel ends where the disks would cover kPistonMaxAreaFraction of the box (or one
+    // diameter from the left wall, whichever is further right).
+    double pistonLower() const;
     void ensureForces();
     void sortBySpace(); // particles in cell order, so neighbours in space are neighbours in memory
 
@@ -181,7 +199,9 @@ protected:
     bool forcesValid_ = false;
     bool energiesValid_ = false; // potential and virial belong to the current positions
     bool escaped_ = false;
-    double pistonVelocity_ = 0.0;
+    double pistonVelocity_ = 0.0; // over the current step [L/T]
+    ObstacleDrive obstacleDrive_;
+    PistonDrive pistonDrive_;
 
     std::int64_t step_ = 0;
     double time_ = 0.0;

@@ -126,6 +126,18 @@ std::vector<ParamField<MdParams>> makeFields() {
     f.push_back(bindReal(&P::pistonX, makeSpec("piston_x", "Piston position", "L", "Walls and fields",
                                                "x of the piston; moving it compresses or expands the gas.",
                                                -5e4, 5e4, 0.01, d.pistonX, true)));
+    f.push_back(bindReal(
+        &P::pistonSpeed,
+        makeSpec("piston_speed", "Piston speed", "× rms speed", "Walls and fields",
+                 "Speed of Compress and Expand, in units of the initial rms speed: well below 1 the gas "
+                 "follows the adiabat T·A = const; near 1 it heats more.",
+                 1e-4, 10, 0.01, d.pistonSpeed, true)));
+    f.push_back(bindReal(
+        &P::toolSpeed,
+        makeSpec("tool_speed", "Drag speed limit", "× rms speed", "Walls and fields",
+                 "Fastest a dragged obstacle or the piston moves, in units of the initial rms speed: the "
+                 "disks always meet a wall of finite speed, whatever the frame rate.",
+                 1e-3, 100, 0.1, d.toolSpeed, true)));
     f.push_back(
         bindText(&P::wallMode, makeChoice("wall_mode", "Walls", "Walls and fields",
                                           "reflecting: elastic walls; thermal: disks leave a wall with "
@@ -197,8 +209,8 @@ double MdParams::defaultMemoryBudget() {
 void MdParams::validate(double memoryBudget) const {
     const long long n = totalCount();
     if (n > maxParticles)
-        throw ParamError("count_a", "count_a + count_b = " + std::to_string(n) +
-                                        " exceeds max_particles = " + std::to_string(maxParticles));
+        throw ParamError("count_a", "{count_a} + {count_b} = " + std::to_string(n) +
+                                        " exceeds {max_particles} = " + std::to_string(maxParticles));
     if (n * kBytesPerDisk > memoryBudget)
         throw ParamError("count_a",
                          std::to_string(n) + " disks need about " + number(n * kBytesPerDisk / 1e9) +
@@ -206,7 +218,7 @@ void MdParams::validate(double memoryBudget) const {
                              " GB allowed (half the physical memory): at most " +
                              std::to_string(static_cast<long long>(memoryBudget / kBytesPerDisk)) + " disks");
     if (pistonEnabled && !(pistonX > left() + maxDiameter() && pistonX <= 0.5 * boxWidth))
-        throw ParamError("piston_x", "'piston_x' = " + number(pistonX) + " must lie inside the box, in (" +
+        throw ParamError("piston_x", "'{piston_x}' = " + number(pistonX) + " must lie inside the box, in (" +
                                          number(left() + maxDiameter()) + ", " + number(0.5 * boxWidth) +
                                          "]");
     const double area = (right() - left()) * boxHeight;

@@ -37,6 +37,8 @@ struct MdParams {
     double gravity = 0.0;                // downward acceleration [L/T²]
     bool pistonEnabled = false;          // a movable vertical wall replacing the right wall
     double pistonX = 1.0;                // its position [L], must lie inside the box
+    double pistonSpeed = 0.05;           // Compress / Expand speed of the piston [× initial rms speed]
+    double toolSpeed = 0.3;              // fastest a dragged obstacle or piston moves [× initial rms speed]
     std::string wallMode = "reflecting"; // "reflecting" or "thermal" (diffuse walls at wallKT)
     double wallKT = 0.5;                 // thermal wall temperature [M·L²/T²]
 

@@ -39,10 +39,7 @@ SceneView MdModel::sceneFrame() const {
     view.right = 0.5 * params_.boxWidth; // the whole box, also when the piston closes part of it
     view.bottom = params_.bottom();
     view.top = params_.top();
-    const double initialRms = params_.initVelocity == "maxwell-boltzmann"
-                                  ? std::sqrt(2.0 * params_.initKT / params_.a.mass)
-                                  : params_.initSpeed;
-    view.colourMax = kColourScaleOverRms * (initialRms > 0 ? initialRms : 1.0);
+    view.colourMax = kColourScaleOverRms * initialRmsSpeed();
     view.colours = ColourMap::Thermal;
     view.colourLabel = "speed";
     view.obstacles = obstacles_;

@@ -16,7 +16,9 @@ constexpr double kSpawnSpacing = 1.05; // lattice spacing of a spawned rectangle
 std::string SpawnResult::message() const {
     std::ostringstream out;
     out << "added " << added << (added == 1 ? " disk" : " disks");
-    if (refusedCap > 0) out << "; " << refusedCap << " refused: the particle cap (max_particles) is reached";
+    if (refusedCap > 0)
+        out << "; " << refusedCap
+            << " refused: the particle cap is reached (Parameters → Limits → Particle cap)";
     if (refusedOverlap > 0) out << "; " << refusedOverlap << " refused: they would overlap other disks";
     if (refusedOutside > 0)
         out << "; " << refusedOutside << " refused: outside the box or inside an obstacle";

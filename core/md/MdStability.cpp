@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <sstream>
+#include <utility>
 
 namespace pl {
 
@@ -15,6 +16,14 @@ std::string fixed(double v, int digits) {
     out.precision(digits);
     out << v;
     return out.str();
+}
+
+// a and b with the fewest decimals (2 at least) that tell them apart, so a value just inside a limit
+// never reads as the limit itself (RK4's 2.8284… against 2√2).
+std::pair<std::string, std::string> distinct(double a, double b) {
+    int digits = 2;
+    while (digits < 17 && fixed(a, digits) == fixed(b, digits)) ++digits;
+    return {fixed(a, digits), fixed(b, digits)};
 }
 
 } // namespace
@@ -70,13 +79,15 @@ std::string MdModel::stabilityHint() const {
     const double limit = stabilityLimit(integrator_);
     const std::string name = params_.integrator;
     if (integrator_ == MdIntegrator::ExplicitEuler)
-        return "explicit Euler gains energy every step (factor 1 + ω²dt² = " + fixed(1 + wdt * wdt, 4) +
+        return "explicit Euler gains energy every step (factor 1 + ω²dt² = 1 + " +
+               formatNumber(wdt * wdt, 3) +
                " per contact step) and is unstable at any dt: use velocity-verlet";
+    const auto [shownWdt, shownLimit] = distinct(wdt, limit); // compared unrounded, shown apart
     if (wdt > limit)
-        return "dt·ω = " + fixed(wdt, 2) + " > " + fixed(limit, 2) + ": " + name +
-               " is unstable; use |dt| < " + fixed(limit / omega, 8) + " (about " +
-               fixed(std::acos(-1.0) / wdt, 1) + " steps per contact now)";
-    return "dt·ω = " + fixed(wdt, 3) + " is inside the stability limit " + fixed(limit, 2) +
+        return "dt·ω = " + shownWdt + " > " + shownLimit + ": " + name + " is unstable; use |dt| < " +
+               formatNumber(limit / omega, 3) + " (about " + formatNumber(std::acos(-1.0) / wdt, 2) +
+               " steps per contact now)";
+    return "dt·ω = " + shownWdt + " is inside the stability limit " + shownLimit +
            "; look for deeply overlapping disks (spawning, random placement with large k) or a fast "
            "obstacle, "
            "or reduce dt";
@@ -88,7 +99,9 @@ void MdModel::checkHealth(bool energyCheck) {
         fail("a disk moved farther than the box in one step or became NaN", stabilityHint());
         return;
     }
-    if (!energyCheck) return;
+    // A body the user drives does work on the gas, so energy is checked again once it rests (the energy
+    // it gave then becomes the reference, advanceBodies).
+    if (!energyCheck || bodiesMoving()) return;
     const double e = totalEnergy();
     if (!std::isfinite(e)) {
         fail("the total energy is not finite", stabilityHint());
@@ -97,8 +110,8 @@ void MdModel::checkHealth(bool energyCheck) {
     const double bound = params_.blowupEnergyFactor * std::max(referenceEnergy_, std::abs(energyBaseline_)) +
                          (params_.wallMode == "thermal" ? 4.0 * params_.wallKT * state_.size() : 0.0);
     if (e > bound && e > 0)
-        fail("the total energy grew from " + fixed(referenceEnergy_, 6) + " to " + fixed(e, 6) +
-                 " (more than " + fixed(params_.blowupEnergyFactor, 0) + "×)",
+        fail("the total energy grew from " + formatNumber(referenceEnergy_, 6) + " to " + formatNumber(e, 6) +
+                 " (more than " + formatNumber(params_.blowupEnergyFactor, 3) + "×)",
              stabilityHint());
 }
 

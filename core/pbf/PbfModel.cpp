@@ -48,6 +48,8 @@ void PbfModel::reset() {
     time_ = 0.0;
     drained_ = 0;
     failure_.reset();
+    obstacleDrive_.clear();
+    for (Obstacle& o : obstacles_) o.vx = o.vy = 0.0;
     errorMean_.clear();
     errorMax_.clear();
     state_.clear();
@@ -97,6 +99,7 @@ pbf::WallJitter PbfModel::wallJitter() const {
 
 void PbfModel::step() {
     if (failure_) return;
+    advanceBodies();
     applyExternalForcesAndPredict();
     findNeighbours();
     const auto iterations = static_cast<std::size_t>(params_.iterations);
@@ -149,16 +152,32 @@ void PbfModel::addObstacle(const Obstacle& obstacle) {
 }
 
 void PbfModel::removeObstacle(std::size_t index) {
-    if (index < obstacles_.size()) obstacles_.erase(obstacles_.begin() + static_cast<long>(index));
+    if (index >= obstacles_.size()) throw std::out_of_range("no obstacle " + std::to_string(index));
+    obstacles_.erase(obstacles_.begin() + static_cast<long>(index));
+    obstacleDrive_.erase(index);
 }
 
-void PbfModel::moveObstacle(std::size_t index, double x, double y, double vx, double vy) {
-    if (index >= obstacles_.size()) return;
+void PbfModel::dragObstacle(std::size_t index, double x, double y) {
+    if (index >= obstacles_.size()) throw std::out_of_range("no obstacle " + std::to_string(index));
+    obstacleDrive_.drag(index, std::clamp(x, 0.0, params_.worldWidth),
+                        std::clamp(y, 0.0, params_.worldHeight));
+}
+
+void PbfModel::releaseObstacle(std::size_t index) {
+    obstacleDrive_.release(index);
+}
+
+void PbfModel::placeObstacle(std::size_t index, double x, double y) {
+    if (index >= obstacles_.size()) throw std::out_of_range("no obstacle " + std::to_string(index));
     Obstacle& o = obstacles_[index];
-    o.x = x;
-    o.y = y;
-    o.vx = vx;
-    o.vy = vy;
+    o.x = std::clamp(x, 0.0, params_.worldWidth);
+    o.y = std::clamp(y, 0.0, params_.worldHeight);
+    o.vx = o.vy = 0.0;
+    obstacleDrive_.stop(index);
+}
+
+double PbfModel::toolSpeed() const {
+    return params_.toolSpeed * params_.waveSpeed();
 }
 
 void PbfModel::scaleKineticEnergy(double factor) {

@@ -8,6 +8,7 @@
 #include "PbfNeighbours.h"
 #include "PbfParams.h"
 #include "PbfState.h"
+#include "common/KinematicDrive.h"
 #include "common/Model.h"
 
 namespace pl {
@@ -53,14 +54,18 @@ public:
     void writeParticles(std::ostream& out) const override;
     SceneView sceneView() const override;
     SceneTools* tools() override { return this; }
+    StateRecord saveState() const override; // PbfSnapshot.cpp
+    void restoreState(const StateRecord& state) override;
 
     // SceneTools
     const std::vector<Obstacle>& obstacles() const override { return obstacles_; }
     void addObstacle(const Obstacle& obstacle) override;
     void removeObstacle(std::size_t index) override;
-    void moveObstacle(std::size_t index, double x, double y, double vx, double vy) override;
-    bool hasPiston() const override { return false; }
-    void movePiston(double, double) override {}
+    void dragObstacle(std::size_t index, double x, double y) override;
+    void releaseObstacle(std::size_t index) override;
+    void placeObstacle(std::size_t index, double x, double y) override;
+    double toolSpeed() const override;
+    bool bodiesMoving() const override { return obstacleDrive_.moving(); }
     std::string spawnInRectangle(double x0, double y0, double x1, double y1) override;
     void scaleKineticEnergy(double factor) override;
 
@@ -82,6 +87,8 @@ protected:
     virtual void pullState() const {}
     virtual void stateEdited() {}
     SceneView sceneFrame() const; // the scene without its particles
+    // Moves the dragged obstacles one step toward their targets at bounded speed (KinematicDrive.h).
+    void advanceBodies() { obstacleDrive_.advance(obstacles_, toolSpeed(), params_.dt); }
 
     // Algorithm 1, line by line.
     void applyExternalForcesAndPredict();
@@ -108,6 +115,7 @@ protected:
     PbfParams params_;
     std::uint64_t seed_ = 1;
     std::vector<Obstacle> obstacles_;
+    ObstacleDrive obstacleDrive_;
     mutable PbfState state_; // mutable: a GPU backend fills it lazily in pullState()
     pbf::Kernels kernels_;
     pbf::ArtificialPressure scorr_;

@@ -11,21 +11,21 @@ constexpr double kMaxParticles = 1 << 24; // 16 M
 } // namespace
 
 void PbfParams::validate() const {
+    const auto n = [](double v) { return formatNumber(v, 6); };
     if (2.0 * particleRadius >= std::min(worldWidth, worldHeight))
-        throw ParamError("particle_radius", "particles of radius " + std::to_string(particleRadius) +
-                                                " do not fit in a " + std::to_string(worldWidth) + " × " +
-                                                std::to_string(worldHeight) + " box");
+        throw ParamError("particle_radius", "{particle_radius} = " + n(particleRadius) +
+                                                " is too large: a particle does not fit in the " +
+                                                n(worldWidth) + " × " + n(worldHeight) + " box");
     if (neighbourRadius() * 4 > std::min(worldWidth, worldHeight))
-        throw ParamError("h", "the kernel radius h = " + std::to_string(h) +
-                                  " is too large for the box: it needs at least 4 h across");
+        throw ParamError("h", "{h} = " + n(h) + " is too large for the " + n(worldWidth) + " × " +
+                                  n(worldHeight) + " box: it needs at least 4 h across");
     if (hasFill() && (fillX0 < 0 || fillY0 < 0 || fillX1 > worldWidth || fillY1 > worldHeight))
-        throw ParamError("fill_x1", "the initial block must lie inside the box [0, " +
-                                        std::to_string(worldWidth) + "] × [0, " +
-                                        std::to_string(worldHeight) + "]");
+        throw ParamError("fill_x1", "the initial block must lie inside the box [0, " + n(worldWidth) +
+                                        "] × [0, " + n(worldHeight) + "]");
     if (hasFill() && fillCount() > maxParticles)
         throw ParamError("max_particles",
                          "the initial block holds " + std::to_string(fillCount()) +
-                             " particles, more than max_particles = " + std::to_string(maxParticles));
+                             " particles, more than {max_particles} = " + std::to_string(maxParticles));
 }
 
 long long PbfParams::fillCount() const {
@@ -136,12 +136,21 @@ const std::vector<ParamField<PbfParams>>& PbfParams::fields() {
                                   1, d.fillX1));
         real(&P::fillY1, makeSpec("fill_y1", "Initial block y₁", "L", "Particles",
                                   "Top edge of the initial block.", 0, 1e5, 1, d.fillY1));
+        real(&P::toolSpeed,
+             makeSpec("tool_speed", "Drag speed limit", "× √(g H)", "Tools",
+                      "Fastest a dragged obstacle moves, in units of the wave speed √(g H) of a tank-deep "
+                      "layer: the fluid always meets a wall of finite speed, whatever the frame rate.",
+                      1e-3, 10, 0.05, d.toolSpeed, true));
         real(&P::colourSpeedMax,
              makeSpec("colour_speed_max", "Colour scale top", "L/s", "Display",
                       "Speed drawn fully red (seed 5).", 1e-6, 1e6, 0.5, d.colourSpeedMax, true));
         return f;
     }();
     return list;
+}
+
+double PbfParams::waveSpeed() const {
+    return std::sqrt(std::hypot(gravityX, gravityY) * worldHeight);
 }
 
 const std::vector<ParamSpec>& PbfParams::describe() {

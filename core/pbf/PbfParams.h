@@ -38,12 +38,18 @@ struct PbfParams {
     bool drain = true; // over the cap, the lowest particles drain away (the seed); off: spawns refused
     double fillX0 = 0, fillY0 = 0, fillX1 = 0, fillY1 = 0; // initial block of fluid; empty when x1 ≤ x0
 
+    // Tools
+    double toolSpeed = 0.25; // fastest a dragged obstacle moves [× √(g H), the shallow-water wave speed of
+                             // a tank-deep layer]
+
     // Display
     double colourSpeedMax = 5.0; // speed at the red end of the colour scale [L/s]
 
     double spacing() const { return spawnSpacing * h; }
     double neighbourRadius() const { return neighbourFactor * h; }
     bool hasFill() const { return fillX1 > fillX0 && fillY1 > fillY0; }
+    // √(g H) [L/s] with g the gravity's magnitude (also while switched off) and H the tank height.
+    double waveSpeed() const;
     long long fillCount() const; // particles of the initial block: its spawn grid
     // Cross-field checks; throws ParamError naming the key.
     void validate() const;

@@ -45,6 +45,7 @@ SceneView PbfModel::sceneFrame() const {
     view.colourLabel = "speed";
     view.colourMax = params_.colourSpeedMax;
     if (state_.size() == 0) view.hint = "Click and drag to pour fluid";
+    view.dragPours = true; // the seed's one gesture: dragging pours, whatever else is on screen
     view.obstacles = obstacles_;
     return view;
 }
@@ -52,7 +53,9 @@ SceneView PbfModel::sceneFrame() const {
 std::string PbfModel::Spawned::message() const {
     std::ostringstream out;
     out << "added " << added << (added == 1 ? " particle" : " particles");
-    if (refusedCap > 0) out << "; " << refusedCap << " refused: the particle cap (max_particles) is reached";
+    if (refusedCap > 0)
+        out << "; " << refusedCap
+            << " refused: the particle cap is reached (Parameters → Particles → Particle cap)";
     if (refusedOverlap > 0) out << "; " << refusedOverlap << " refused: fluid is already there";
     if (refusedOutside > 0)
         out << "; " << refusedOutside << " refused: outside the tank or inside an obstacle";

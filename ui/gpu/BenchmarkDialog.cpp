@@ -114,7 +114,7 @@ void BenchmarkDialog::runNext() {
     const std::string key = job.scene + "/" + gl::backendName(job.backend);
     if (std::find(tooSlow_.begin(), tooSlow_.end(), key) == tooSlow_.end()) {
         status_->setText(tr("Timing the %1 with %2 particles on the %3…")
-                             .arg(QString::fromStdString(job.scene))
+                             .arg(job.scene == "gas" ? tr("gas") : tr("fluid"))
                              .arg(job.particles)
                              .arg(job.backend == gl::Backend::Gl ? tr("GPU") : tr("CPU")));
         status_->repaint();
@@ -142,8 +142,8 @@ void BenchmarkDialog::runNext() {
 }
 
 int BenchmarkDialog::graphFor(const std::string& scene, const std::string& backend) {
-    const QString name =
-        QString("%1, %2").arg(QString::fromStdString(scene), backend == "gl" ? tr("GPU") : tr("CPU"));
+    const QString name = QString("%1, %2").arg(scene == "gas" ? tr("gas") : tr("fluid"),
+                                               backend == "gl" ? tr("GPU") : tr("CPU"));
     for (int g = 0; g < plot_->graphCount(); ++g)
         if (plot_->graph(g)->name() == name) return g;
     QCPGraph* graph = plot_->addGraph();

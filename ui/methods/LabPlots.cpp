@@ -1,4 +1,5 @@
 #include "LabPlots.h"
+#include "i18n/Translations.h"
 
 #include "plots/PlotExport.h"
 #include "plots/PlotStyle.h"
@@ -73,7 +74,7 @@ QColor outcomeColour(methods::CellOutcome outcome) {
 void addOutcomeGraphs(QCustomPlot* plot, const std::vector<methods::CellOutcome>& classes) {
     for (methods::CellOutcome c : classes) {
         QCPGraph* g = plot->addGraph();
-        g->setName(QString::fromLatin1(methods::outcomeName(c)));
+        g->setName(coreText(methods::outcomeName(c)));
         g->setLineStyle(QCPGraph::lsNone);
         g->setScatterStyle(
             QCPScatterStyle(QCPScatterStyle::ssSquare, outcomeColour(c), outcomeColour(c), 11));

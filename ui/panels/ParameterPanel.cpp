@@ -1,9 +1,11 @@
-// ParameterPanel: editors made from ParamSpec kinds — Real: ScientificSpinBox, Integer: QSpinBox,
-// Boolean: QCheckBox, Choice: QComboBox, Color: a swatch button with QColorDialog.
+// ParameterPanel: editors made from ParamSpec kinds — Real and Integer: ScientificSpinBox, Boolean:
+// QCheckBox, Choice: QComboBox, Color: a swatch button with QColorDialog. The number editors accept any
+// number: the model's validation, not a spin box's range, decides, so its answer can be shown.
 #include "ParameterPanel.h"
 
 #include "ScientificSpinBox.h"
 #include "SimulationController.h"
+#include "i18n/Translations.h"
 
 #include <QCheckBox>
 #include <QColorDialog>
@@ -11,20 +13,17 @@
 #include <QFormLayout>
 #include <QGroupBox>
 #include <QLabel>
-#include <QMessageBox>
 #include <QPushButton>
 #include <QScrollArea>
 #include <QSignalBlocker>
-#include <QSpinBox>
 #include <QVBoxLayout>
-#include <climits>
 
 namespace pl::ui {
 
 namespace {
 
 QString tooltipFor(const ParamSpec& spec) {
-    QString text = QString::fromStdString(spec.tooltip);
+    QString text = translatedTooltip(spec);
     text += QObject::tr("\nAllowed: %1").arg(QString::fromStdString(describeAllowed(spec)));
     text +=
         spec.appliesLive ? QObject::tr("\nTakes effect at once.") : QObject::tr("\nTakes effect on Reset.");
@@ -32,11 +31,16 @@ QString tooltipFor(const ParamSpec& spec) {
 }
 
 QString labelFor(const ParamSpec& spec) {
-    QString text = QString::fromStdString(spec.label);
-    if (!spec.unit.empty()) text += QStringLiteral(" [%1]").arg(QString::fromStdString(spec.unit));
+    QString text = translatedLabel(spec);
+    if (!spec.unit.empty()) text += QStringLiteral(" [%1]").arg(translatedUnit(spec));
     if (!spec.appliesLive) text += QStringLiteral(" ⟲");
     return text;
 }
+
+// Beyond any parameter's range, so that every typed number reaches the model's validation.
+constexpr double kAnyNumber = 1e300;
+const QColor kProblemText("#b00000");
+const QColor kProblemField("#ffd9d9");
 
 void paintSwatch(QPushButton* button, const QString& colour) {
     button->setText(colour);
@@ -81,13 +85,14 @@ void ParameterPanel::rebuild() {
     }
     editors_.clear();
     setters_.clear();
+    problems_.clear();
     const Model* model = controller_->model();
     if (!model) return;
     std::map<std::string, QFormLayout*> forms;
     for (const ParamSpec& spec : model->paramSpecs()) {
         QFormLayout*& form = forms[spec.group];
         if (!form) {
-            auto* box = new QGroupBox(QString::fromStdString(spec.group), content_);
+            auto* box = new QGroupBox(translatedGroup(spec), content_);
             form = new QFormLayout(box);
             form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
             groups_->addWidget(box);
@@ -99,6 +104,15 @@ void ParameterPanel::rebuild() {
         label->setBuddy(editor);
         form->addRow(label, editor);
         editors_[spec.key] = editor;
+        auto* problem = new QLabel(editor->parentWidget());
+        problem->setObjectName(QString::fromStdString("problem-" + spec.key));
+        problem->setWordWrap(true);
+        QPalette red = problem->palette();
+        red.setColor(QPalette::WindowText, kProblemText);
+        problem->setPalette(red);
+        form->addRow(problem);
+        form->setRowVisible(problem, false);
+        problems_[spec.key] = {form, problem};
     }
     groups_->addStretch(1);
     showValues();
@@ -108,26 +122,30 @@ void ParameterPanel::rebuild() {
 QWidget* ParameterPanel::createEditor(const ParamSpec& spec) {
     const std::string key = spec.key;
     switch (spec.kind) {
-    case ParamKind::Real: {
+    case ParamKind::Real:
+    case ParamKind::Integer: {
         auto* box = new ScientificSpinBox(content_);
-        box->setRange(spec.min, spec.max);
-        box->setIncrement(spec.step);
+        box->setRange(-kAnyNumber, kAnyNumber);
+        box->setStepLimits(spec.min, spec.max);
+        box->setIntegerMode(spec.kind == ParamKind::Integer);
+        box->setIncrement(spec.kind == ParamKind::Integer ? std::max(spec.step, 1.0) : spec.step);
+        box->setReportsUnreadableText(true);
         connect(box, &QDoubleSpinBox::editingFinished, this, [this, key, box] {
-            if (box->value() != std::get<double>(controller_->model()->params().at(key)))
+            if (box->value() == std::get<double>(controller_->model()->params().at(key)))
+                clearProblem(key); // typed back the value in use
+            else
                 apply(key, box->value());
         });
+        connect(box, &ScientificSpinBox::unreadableText, this, [this, spec](const QString& text) {
+            showProblem(spec.key,
+                        tr("%1: “%2” is not a number (allowed: %3)")
+                            .arg(translatedLabel(spec), text, QString::fromStdString(describeAllowed(spec))));
+        });
+        connect(box, &ScientificSpinBox::editCancelled, this, [this, key] {
+            clearProblem(key);
+            showValue(key);
+        });
         setters_[key] = [box](const ParamValue& v) { box->setValue(std::get<double>(v)); };
-        return box;
-    }
-    case ParamKind::Integer: {
-        auto* box = new QSpinBox(content_);
-        box->setRange(static_cast<int>(std::max<double>(spec.min, INT_MIN)),
-                      static_cast<int>(std::min<double>(spec.max, INT_MAX)));
-        box->setSingleStep(spec.step >= 1 ? static_cast<int>(spec.step) : 1);
-        box->setKeyboardTracking(false);
-        box->setGroupSeparatorShown(true);
-        connect(box, &QSpinBox::valueChanged, this, [this, key](int value) { apply(key, double(value)); });
-        setters_[key] = [box](const ParamValue& v) { box->setValue(static_cast<int>(std::get<double>(v))); };
         return box;
     }
     case ParamKind::Boolean: {
@@ -163,11 +181,56 @@ QWidget* ParameterPanel::createEditor(const ParamSpec& spec) {
 
 QString ParameterPanel::apply(const std::string& key, const ParamValue& value) {
     const QString error = controller_->setParameters({{key, value}});
-    if (!error.isEmpty()) {
-        showValues(); // the editor goes back to the value the model kept
-        QMessageBox::warning(this, tr("Invalid parameter value"), error);
+    if (error.isEmpty()) {
+        clearProblem(key);
+        showValue(key);
+        return error;
     }
+    if (const auto setter = setters_.find(key); setter != setters_.end()) { // the field shows what was tried
+        const QSignalBlocker block(editors_.at(key));
+        setter->second(value);
+    }
+    showProblem(key, error);
     return error;
+}
+
+QString ParameterPanel::problem(const std::string& key) const {
+    const auto it = problems_.find(key);
+    return it == problems_.end() || !it->second.form->isRowVisible(it->second.label)
+               ? QString()
+               : it->second.label->text();
+}
+
+void ParameterPanel::showProblem(const std::string& key, const QString& text) {
+    const auto it = problems_.find(key);
+    if (it == problems_.end()) return;
+    it->second.label->setText(text);
+    it->second.form->setRowVisible(it->second.label, true);
+    QWidget* field = editors_.at(key);
+    QPalette red = field->palette();
+    red.setColor(QPalette::Base, kProblemField);
+    red.setColor(QPalette::Button, kProblemField);
+    red.setColor(QPalette::Text, kProblemText);
+    field->setPalette(red);
+    field->setToolTip(text);
+}
+
+void ParameterPanel::clearProblem(const std::string& key) {
+    const auto it = problems_.find(key);
+    if (it == problems_.end() || !it->second.form->isRowVisible(it->second.label)) return;
+    it->second.form->setRowVisible(it->second.label, false);
+    it->second.label->clear();
+    QWidget* field = editors_.at(key);
+    field->setPalette(QPalette()); // inherits the panel's again
+    if (const ParamSpec* spec = findSpec(controller_->model()->paramSpecs(), key))
+        field->setToolTip(tooltipFor(*spec));
+}
+
+void ParameterPanel::showValue(const std::string& key) {
+    const auto setter = setters_.find(key);
+    if (setter == setters_.end()) return;
+    const QSignalBlocker block(editors_.at(key));
+    setter->second(controller_->model()->params().at(key));
 }
 
 QWidget* ParameterPanel::editor(const std::string& key) const {
@@ -180,7 +243,7 @@ void ParameterPanel::showValues() {
     if (!model) return;
     for (const auto& [key, value] : model->params()) {
         const auto it = setters_.find(key);
-        if (it == setters_.end()) continue;
+        if (it == setters_.end() || !problem(key).isEmpty()) continue; // a rejected field keeps its text
         const QSignalBlocker block(editors_.at(key));
         it->second(value);
     }

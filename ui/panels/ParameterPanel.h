@@ -1,6 +1,7 @@
 // The Parameters dock: one editor per ParamSpec of the loaded model, grouped as the specs say, with units
 // and tooltips. Live parameters act at once; the others are marked and wait for Reset, and the panel
-// says how many are waiting. A rejected value shows a dialog naming the problem and reverts the editor.
+// says how many are waiting. A rejected value stays in its field as typed; the field turns red and a line
+// under it says what is wrong, in the labels' words, until a valid value is applied or Escape drops it.
 #pragma once
 
 #include "common/ParamSpec.h"
@@ -9,6 +10,7 @@
 #include <functional>
 #include <map>
 
+class QFormLayout;
 class QLabel;
 class QPushButton;
 class QVBoxLayout;
@@ -22,16 +24,21 @@ class ParameterPanel : public QWidget {
 public:
     explicit ParameterPanel(SimulationController* controller, QWidget* parent = nullptr);
 
-    // Applies one value as if typed by the user; returns the error shown, or empty.
+    // Applies one value as if typed by the user; returns the error shown under its field, or empty.
     QString apply(const std::string& key, const ParamValue& value);
     // The editor widget of a key (for tests and focus), nullptr when absent.
     QWidget* editor(const std::string& key) const;
+    // What is wrong with the value in a key's field, empty when it was accepted.
+    QString problem(const std::string& key) const;
 
 private:
     void rebuild();
     void showValues();
     void updatePendingBanner();
     QWidget* createEditor(const ParamSpec& spec);
+    void showValue(const std::string& key); // the model's value, without signals
+    void showProblem(const std::string& key, const QString& text);
+    void clearProblem(const std::string& key);
 
     SimulationController* controller_;
     QVBoxLayout* groups_ = nullptr;
@@ -39,6 +46,11 @@ private:
     QLabel* pending_ = nullptr;
     QPushButton* resetButton_ = nullptr;
     std::map<std::string, QWidget*> editors_;
+    struct ProblemLine {
+        QFormLayout* form;
+        QLabel* label; // red, under the field; its row is hidden while the value is accepted
+    };
+    std::map<std::string, ProblemLine> problems_;
     std::map<std::string, std::function<void(const ParamValue&)>> setters_; // show a value, no signals
 };
 

@@ -1,9 +1,11 @@
 // DistributionPlot: the histogram range follows the measured temperature, so averaged samples are
 // resampled onto the newest bins before they are averaged.
 #include "DistributionPlot.h"
+#include "i18n/Translations.h"
 
 #include "PlotExport.h"
 #include "PlotStyle.h"
+#include "ReadablePlot.h"
 #include "SimulationController.h"
 
 #include <QHBoxLayout>
@@ -46,15 +48,14 @@ DistributionPlot::DistributionPlot(SimulationController* controller, const QStri
     controls->addStretch(1);
     layout->addLayout(controls);
     layout->addWidget(plot_);
-    plot_->legend->setVisible(true);
-    plot_->legend->setBrush(QColor(255, 255, 255, 200));
-    plot_->legend->setRowSpacing(0);
-    plot_->axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignTop | Qt::AlignRight);
     plot_->yAxis->setLabel(tr("probability density"));
+    // From the top: the summary as the title, the legend, the bars; nothing is drawn over the bars.
     plot_->plotLayout()->insertRow(0);
     title_ = new QCPTextElement(plot_, "", QFont(font().family(), font().pointSize()));
     plot_->plotLayout()->addElement(0, 0, title_);
+    placeLegendRow(plot_, plot_->legend, 1);
     installPlotExportMenu(plot_);
+    keepDataReadable(plot_);
     connect(window_, &QSpinBox::valueChanged, this, &DistributionPlot::redraw);
     connect(controller->series(), &SeriesStore::appended, this, &DistributionPlot::refresh);
     connect(controller->series(), &SeriesStore::restarted, this, [this] {
@@ -101,7 +102,7 @@ void DistributionPlot::redraw() {
         }
         const std::size_t colour = std::min<std::size_t>(h, std::size(kBarColours) - 1);
         auto* bars = new QCPBars(plot_->xAxis, plot_->yAxis);
-        const QString label = QString::fromStdString(named.label);
+        const QString label = coreText(named.label);
         bars->setName(latest_.size() > 1 ? label : tr("measured"));
         bars->setPen(Qt::NoPen);
         bars->setBrush(kBarColours[colour]);
@@ -110,8 +111,8 @@ void DistributionPlot::redraw() {
         right = std::max(right, counts.hi());
         if (named.theoryDensity) {
             QCPGraph* theory = plot_->addGraph();
-            theory->setName(latest_.size() > 1 ? tr("%1: Maxwell–Boltzmann").arg(label)
-                                               : tr("Maxwell–Boltzmann"));
+            // With several species the bars name the species and each curve says only that it is theory.
+            theory->setName(latest_.size() > 1 ? tr("%1 (theory)").arg(label) : tr("Maxwell–Boltzmann"));
             theory->setPen(QPen(kTheoryColours[colour], 2));
             QVector<double> xs, fs;
             for (int i = 0; i <= kTheoryPoints; ++i) {
@@ -122,7 +123,7 @@ void DistributionPlot::redraw() {
             theory->setData(xs, fs, true);
         }
         summaries << QString::fromStdString(named.summary);
-        plot_->xAxis->setLabel(QString::fromStdString(named.axis));
+        plot_->xAxis->setLabel(coreText(named.axis));
         plot_->xAxis->setRangeLower(counts.lo());
     }
     if (right > 0) plot_->xAxis->setRangeUpper(right);

@@ -18,8 +18,11 @@ void applyPlotFont(QCustomPlot* plot, const QFont& font) {
         for (int i = 0; i < insets->elementCount(); ++i)
             if (auto* legend = qobject_cast<QCPLegend*>(insets->elementAt(i))) legend->setFont(small);
     }
-    for (int i = 0; i < plot->plotLayout()->elementCount(); ++i)
-        if (auto* text = qobject_cast<QCPTextElement*>(plot->plotLayout()->elementAt(i))) text->setFont(font);
+    for (int i = 0; i < plot->plotLayout()->elementCount(); ++i) {
+        QCPLayoutElement* element = plot->plotLayout()->elementAt(i);
+        if (auto* text = qobject_cast<QCPTextElement*>(element)) text->setFont(font);
+        if (auto* legend = qobject_cast<QCPLegend*>(element)) legend->setFont(small); // legends in rows
+    }
     const double width = std::max(1.6, font.pointSizeF() / 6.0);
     for (int g = 0; g < plot->graphCount(); ++g) {
         QPen pen = plot->graph(g)->pen();

@@ -3,10 +3,14 @@
 
 #include "PlotExport.h"
 #include "PlotStyle.h"
+#include "ReadablePlot.h"
 #include "SimulationController.h"
 
 #include <QVBoxLayout>
+#include <algorithm>
 #include <cmath>
+#include <functional>
+#include <limits>
 #include <qcustomplot.h>
 
 namespace pl::ui {
@@ -19,12 +23,13 @@ SeriesPlot::SeriesPlot(SimulationController* controller, SeriesPlotSpec spec, QW
     layout->setContentsMargins(0, 0, 0, 0);
     layout->addWidget(plot_);
     installPlotExportMenu(plot_);
+    keepDataReadable(plot_);
     connect(controller->series(), &SeriesStore::restarted, this, &SeriesPlot::rebuild);
     connect(controller->series(), &SeriesStore::appended, this, &SeriesPlot::refresh);
     rebuild();
 }
 
-void SeriesPlot::addPanel(QCPAxisRect* rect, const SeriesPanel& panel) {
+void SeriesPlot::addPanel(QCPAxisRect* rect, const SeriesPanel& panel, QCPLegend* legend) {
     const SeriesStore* store = controller_->series();
     rect->axis(QCPAxis::atLeft)->setLabel(panel.yLabel);
     rect->axis(QCPAxis::atBottom)->setLabel(panel.xLabel.isEmpty() ? tr("time") : panel.xLabel);
@@ -34,35 +39,82 @@ void SeriesPlot::addPanel(QCPAxisRect* rect, const SeriesPanel& panel) {
         rect->axis(QCPAxis::atLeft)->setNumberFormat("eb"); // 10⁻⁴ rather than 0.0001
         rect->axis(QCPAxis::atLeft)->setNumberPrecision(0);
     }
-    auto* legend = new QCPLegend;
-    rect->insetLayout()->addElement(legend, Qt::AlignTop | Qt::AlignRight);
-    legend->setLayer("legend");
-    legend->setBrush(QColor(255, 255, 255, 200));
     const int xColumn = store->column(panel.xColumn);
+    const bool timePanel = !panel.profile && panel.xColumn == QLatin1String("time");
+    QCPAxis* x = rect->axis(QCPAxis::atBottom);
+    QCPAxis* y = rect->axis(QCPAxis::atLeft);
     for (const auto& curve : panel.curves) {
         const int column = panel.profile ? -1 : store->column(curve.column);
         if (!panel.profile && (column < 0 || xColumn < 0)) continue;
-        QCPGraph* graph = plot_->addGraph(rect->axis(QCPAxis::atBottom), rect->axis(QCPAxis::atLeft));
+        QCPGraph* graph = plot_->addGraph(x, y);
         graph->setName(curve.label);
         graph->setPen(QPen(curve.colour, 1.6, curve.style));
         if (panel.profile) graph->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCircle, 5));
         graph->addToLegend(legend);
-        bound_.push_back({plot_->graphCount() - 1, column, xColumn,
-                          panel.profile ? curve.column.toStdString() : std::string(), curve.label, legend});
+        Bound bound{plot_->graphCount() - 1,
+                    column,
+                    xColumn,
+                    panel.profile ? curve.column.toStdString() : std::string(),
+                    curve.label,
+                    legend};
+        if (timePanel) {
+            QCPGraph* back = plot_->addGraph(x, y);
+            back->setName(tr("%1 (backwards)").arg(curve.label)); // its CSV column
+            back->setPen(QPen(curve.colour, 1.6, Qt::DotLine));
+            back->removeFromLegend(legend);
+            bound.backGraph = plot_->graphCount() - 1;
+        }
+        bound_.push_back(bound);
+    }
+    if (timePanel && !panel.curves.empty()) {
+        QCPGraph* key = plot_->addGraph(x, y);
+        key->setName(tr("time running backwards"));
+        key->setPen(QPen(QColor(90, 90, 90), 1.6, Qt::DotLine));
+        key->removeFromLegend(legend);
+        backKeys_.push_back({plot_->graphCount() - 1, legend, x});
     }
 }
+
+namespace {
+// The time run up to each row, Σ|Δt| from the first row's time: equal to the time while it only runs
+// forwards, and still increasing when it runs backwards.
+QVector<double> timeRun(const QVector<double>& times) {
+    QVector<double> run(times.size());
+    for (qsizetype i = 0; i < times.size(); ++i)
+        run[i] = i == 0 ? times[0] : run[i - 1] + std::abs(times[i] - times[i - 1]);
+    return run;
+}
+
+// values where a stretch of the wanted direction touches the row, NaN elsewhere (QCustomPlot breaks the
+// line at NaN). Row i ends the stretch from row i − 1.
+QVector<double> directionPart(const QVector<double>& times, const QVector<double>& values, bool backwards) {
+    QVector<double> part(values.size(), std::numeric_limits<double>::quiet_NaN());
+    const auto stretch = [&](qsizetype end) { return (times[end] < times[end - 1]) == backwards; };
+    for (qsizetype i = 0; i < values.size(); ++i) {
+        const bool before = i > 0 && stretch(i), after = i + 1 < values.size() && stretch(i + 1);
+        if (before || after || (values.size() == 1 && !backwards)) part[i] = values[i];
+    }
+    return part;
+}
+} // namespace
 
 void SeriesPlot::rebuild() {
     plot_->clearGraphs();
     plot_->plotLayout()->clear();
     bound_.clear();
+    backKeys_.clear();
+    // Each panel: its legend in a row above it, then the panel.
+    auto* upperLegend = new QCPLegend;
+    placeLegendRow(plot_, upperLegend, 0);
     auto* upper = new QCPAxisRect(plot_);
-    plot_->plotLayout()->addElement(0, 0, upper);
-    addPanel(upper, spec_.upper);
+    plot_->plotLayout()->addElement(1, 0, upper);
+    addPanel(upper, spec_.upper, upperLegend);
     if (!spec_.lower.curves.empty()) {
+        auto* lowerLegend = new QCPLegend;
+        placeLegendRow(plot_, lowerLegend, 2);
         auto* lower = new QCPAxisRect(plot_);
-        plot_->plotLayout()->addElement(1, 0, lower);
-        addPanel(lower, spec_.lower);
+        plot_->plotLayout()->addElement(3, 0, lower);
+        addPanel(lower, spec_.lower, lowerLegend);
         // One time axis for both panels.
         if (spec_.upper.xColumn == spec_.lower.xColumn && !spec_.upper.profile && !spec_.lower.profile)
             connect(upper->axis(QCPAxis::atBottom), qOverload<const QCPRange&>(&QCPAxis::rangeChanged),
@@ -77,10 +129,13 @@ void SeriesPlot::refresh() {
     const SeriesStore* store = controller_->series();
     std::vector<NamedProfile> profiles;
     if (const Model* model = controller_->model(); model && hasProfiles()) profiles = model->profiles();
+    const QVector<double> times = store->values(store->column("time"));
+    const bool reversed = std::adjacent_find(times.begin(), times.end(), std::greater<>()) != times.end();
+    const QVector<double> run = reversed ? timeRun(times) : times;
     for (const auto& b : bound_) {
         QVector<double> xs, values;
         if (b.column >= 0) {
-            xs = store->values(b.xColumn);
+            xs = b.backGraph >= 0 ? run : store->values(b.xColumn);
             values = store->values(b.column);
         } else {
             for (const auto& p : profiles)
@@ -90,10 +145,17 @@ void SeriesPlot::refresh() {
                 }
         }
         QCPGraph* graph = plot_->graph(b.graph);
-        graph->setData(xs, values, b.column < 0 || b.xColumn == store->column("time"));
+        if (b.backGraph >= 0) {
+            QCPGraph* back = plot_->graph(b.backGraph);
+            reversed ? back->setData(xs, directionPart(times, values, true), true) : back->data()->clear();
+            graph->setData(xs, reversed ? directionPart(times, values, false) : values, true);
+        } else {
+            graph->setData(xs, values, b.column < 0);
+        }
         // A column that is NaN throughout (kT of an absent species) stays out of the plot and legend.
         const bool any = std::any_of(values.begin(), values.end(), [](double v) { return std::isfinite(v); });
         graph->setVisible(any);
+        if (b.backGraph >= 0) plot_->graph(b.backGraph)->setVisible(any && reversed);
         if (any)
             graph->addToLegend(b.legend);
         else
@@ -102,6 +164,12 @@ void SeriesPlot::refresh() {
         graph->setName(!values.isEmpty() && std::isfinite(values.back())
                            ? QStringLiteral("%1  %2").arg(b.label).arg(values.back(), 0, 'g', 4)
                            : b.label);
+    }
+    for (const BackKey& key : backKeys_) {
+        QCPGraph* graph = plot_->graph(key.graph);
+        reversed ? graph->addToLegend(key.legend) : graph->removeFromLegend(key.legend);
+        graph->setVisible(reversed);
+        key.timeAxis->setLabel(reversed ? tr("time run, Σ |Δt|") : tr("time"));
     }
     for (auto* rect : plot_->axisRects()) {
         // x: the span of the data (a time axis follows the run; T and iteration axes start at 0).

@@ -1,6 +1,8 @@
 // A plot of columns of the series store against time (or another column): an upper panel and an optional
 // lower one (linear or logarithmic), the latest values in the legend. A panel may instead show one of the
-// model's profiles. The Energy, Thermodynamics and Density error docks are instances.
+// model's profiles. The Energy, Thermodynamics and Density error docks are instances. After time has run
+// backwards, time panels plot against the time run, Σ|Δt|, with the backward stretches dotted, so a
+// reversal never draws a curve over itself. Legends sit above their panel (ReadablePlot.h).
 #pragma once
 
 #include <QColor>
@@ -57,7 +59,7 @@ protected:
 private:
     void rebuild();
     bool hasProfiles() const;
-    void addPanel(QCPAxisRect* rect, const SeriesPanel& panel);
+    void addPanel(QCPAxisRect* rect, const SeriesPanel& panel, QCPLegend* legend);
 
     SimulationController* controller_;
     SeriesPlotSpec spec_;
@@ -69,8 +71,16 @@ private:
         std::string profile;
         QString label;
         QCPLegend* legend;
+        int backGraph = -1; // time panels: the same curve where time ran backwards (dotted)
     };
     std::vector<Bound> bound_;
+    // Per time panel: the legend entry that explains the dotted curves, shown once time has run backwards.
+    struct BackKey {
+        int graph;
+        QCPLegend* legend;
+        QCPAxis* timeAxis;
+    };
+    std::vector<BackKey> backKeys_;
 };
 
 } // namespace pl::ui

@@ -6,8 +6,9 @@
 namespace pl::ui {
 
 namespace {
+// lupdate files these tr() calls under the enclosing namespace, so that is their context.
 QString tr(const char* text) {
-    return QCoreApplication::translate("SeriesPlotSpecs", text);
+    return QCoreApplication::translate("pl::ui", text);
 }
 const QColor kBlue(40, 90, 170), kOrange(220, 120, 20), kGreen(40, 140, 70), kRed(190, 40, 40),
     kGrey(90, 90, 90);

@@ -91,6 +91,7 @@ constexpr float kPointRadiusPx = 2.0f;
 
 GLViewport::GLViewport(SimulationController* controller, QWidget* parent)
     : QOpenGLWidget(parent), core_(new ViewportCore(controller, this)) {
+    setFocusPolicy(Qt::StrongFocus); // the window's keys start here, and a click brings them back
     connect(controller, &SimulationController::frameAdvanced, this, qOverload<>(&QWidget::update));
     connect(controller, &SimulationController::modelReplaced, this, qOverload<>(&QWidget::update));
 }

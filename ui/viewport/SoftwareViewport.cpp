@@ -10,6 +10,7 @@ namespace pl::ui {
 
 SoftwareViewport::SoftwareViewport(SimulationController* controller, QWidget* parent)
     : QWidget(parent), core_(new ViewportCore(controller, this)) {
+    setFocusPolicy(Qt::StrongFocus); // the window's keys start here, and a click brings them back
     setAttribute(Qt::WA_OpaquePaintEvent);
     connect(controller, &SimulationController::frameAdvanced, this, qOverload<>(&QWidget::update));
     connect(controller, &SimulationController::modelReplaced, this, qOverload<>(&QWidget::update));

@@ -1,9 +1,11 @@
-// ViewportCore: tools act on the model only between steps (Qt delivers input between frames), and a
-// dragged obstacle gets the velocity of the mouse in simulated time, so the particles it hits are pushed
-// as by a moving wall (MdBoundaries reflects in the obstacle's frame).
+// ViewportCore: tools act on the model only between steps (Qt delivers input between frames). A drag
+// only sets a target: while time runs the model moves the obstacle or piston there at its bounded tool
+// speed every step (KinematicDrive.h), so what the particles feel does not depend on the frame rate;
+// while time stands still the body is placed at once, at rest.
 #include "ViewportCore.h"
 
 #include "Palette.h"
+#include "i18n/Translations.h"
 #include "SimulationController.h"
 
 #include <QMouseEvent>
@@ -34,11 +36,10 @@ ViewportCore::ViewportCore(SimulationController* controller, QWidget* widget)
     : QObject(widget), controller_(controller), widget_(widget) {
     widget->installEventFilter(this);
     widget->setMouseTracking(true);
-    connect(controller, &SimulationController::frameAdvanced, this, &ViewportCore::applyPendingDrag);
     connect(controller, &SimulationController::modelReplaced, this, [this] {
         gesture_ = Gesture::None;
-        dragTarget_.reset();
         hovered_.reset();
+        steeredTo_.reset();
     });
     frameClock_.start();
     updateCursor();
@@ -148,17 +149,16 @@ void ViewportCore::press(QMouseEvent* event) {
             grabbed_ = *hit;
             const Obstacle& o = tools->obstacles()[*hit];
             grabOffset_ = QPointF(o.x - world.x(), o.y - world.y());
-            lastDragTime_ = controller_->model()->time();
         } else if (nearPiston(pressPx_) && tools->hasPiston()) {
             gesture_ = Gesture::DragPiston;
         } else {
-            gesture_ = Gesture::Pan;
+            gesture_ = scene_.dragPours ? Gesture::Pour : Gesture::Pan;
         }
         break;
     case ViewportTool::Piston:
         if (!tools->hasPiston()) {
             emit statusMessage(
-                tr("This experiment has no piston: enable it in Parameters (piston_enabled)."));
+                tr("This experiment has no piston: tick “Piston” in Parameters → Walls and fields."));
             return;
         }
         gesture_ = Gesture::DragPiston;
@@ -207,36 +207,38 @@ void ViewportCore::move(QMouseEvent* event) {
         transform_.panBy(currentPx_ - previous);
         break;
     case Gesture::DragObstacle:
-        dragTarget_ = world + grabOffset_;
-        if (!controller_->isRunning()) applyPendingDrag(); // paused: place it now, at rest
+        steerObstacle(world + grabOffset_);
         break;
     case Gesture::DragPiston:
-        if (tools && tools->hasPiston()) {
-            tools->movePiston(world.x(), 0.0);
-            controller_->noteEdited();
-        }
+        steerPiston(world.x());
         break;
     case Gesture::Rectangle:
+    case Gesture::Pour:
         break;
     }
     widget_->update();
 }
 
-void ViewportCore::applyPendingDrag() {
-    if (gesture_ != Gesture::DragObstacle || !dragTarget_) return;
-    Model* model = controller_->model();
-    SceneTools* tools = model ? model->tools() : nullptr;
+void ViewportCore::steerObstacle(QPointF target) {
+    SceneTools* tools = controller_->model() ? controller_->model()->tools() : nullptr;
     if (!tools || grabbed_ >= tools->obstacles().size()) return;
-    const Obstacle& o = tools->obstacles()[grabbed_];
-    const double elapsed = model->time() - lastDragTime_;
-    double vx = 0, vy = 0;
-    if (controller_->isRunning() && elapsed != 0.0) { // signed: with time reversed the velocity flips
-        vx = (dragTarget_->x() - o.x) / elapsed;
-        vy = (dragTarget_->y() - o.y) / elapsed;
+    if (controller_->isRunning()) {
+        tools->dragObstacle(grabbed_, target.x(), target.y());
+        steeredTo_ = target;
+    } else {
+        tools->placeObstacle(grabbed_, target.x(), target.y());
+        steeredTo_.reset();
     }
-    tools->moveObstacle(grabbed_, dragTarget_->x(), dragTarget_->y(), vx, vy);
-    lastDragTime_ = model->time();
-    dragTarget_.reset();
+    controller_->noteEdited();
+}
+
+void ViewportCore::steerPiston(double x) {
+    SceneTools* tools = controller_->model() ? controller_->model()->tools() : nullptr;
+    if (!tools || !tools->hasPiston()) return;
+    if (controller_->isRunning())
+        tools->dragPiston(x);
+    else
+        tools->placePiston(x);
     controller_->noteEdited();
 }
 
@@ -246,17 +248,14 @@ void ViewportCore::release(QMouseEvent* event) {
     const Gesture finished = gesture_;
     gesture_ = Gesture::None;
     if (finished == Gesture::DragObstacle && tools && grabbed_ < tools->obstacles().size()) {
-        dragTarget_ = transform_.toWorld(currentPx_) + grabOffset_;
-        gesture_ = Gesture::DragObstacle; // for the last move
-        applyPendingDrag();
-        gesture_ = Gesture::None;
-        const Obstacle& o = tools->obstacles()[grabbed_];
-        tools->moveObstacle(grabbed_, o.x, o.y, 0.0, 0.0); // let go: it stops
+        steerObstacle(transform_.toWorld(currentPx_) + grabOffset_);
+        tools->releaseObstacle(grabbed_); // let go: it coasts to the last target and stops there
     }
-    if (finished == Gesture::Rectangle && tools) {
+    if (finished == Gesture::DragPiston) steerPiston(transform_.toWorld(currentPx_).x());
+    if ((finished == Gesture::Rectangle || finished == Gesture::Pour) && tools) {
         QPointF a = transform_.toWorld(pressPx_), b = transform_.toWorld(currentPx_);
         const bool click = distance(pressPx_, currentPx_) < kClickPx;
-        if (tool_ == ViewportTool::Spawn) {
+        if (tool_ == ViewportTool::Spawn || finished == Gesture::Pour) {
             if (click) b = a;
             emit statusMessage(QString::fromStdString(tools->spawnInRectangle(a.x(), a.y(), b.x(), b.y())));
         } else {
@@ -299,11 +298,49 @@ void ViewportCore::paintOverlay(QPainter& painter) const {
         const QPointF origin = transform_.toWidget(0, 0);
         painter.drawLine(QPointF(box.left(), origin.y()), QPointF(box.right(), origin.y()));
         painter.drawLine(QPointF(origin.x(), box.top()), QPointF(origin.x(), box.bottom()));
+        // Tick values along the bottom and the left edge of what is visible, inside the box (the view's
+        // margin is narrow): steps of 1, 2 or 5 × 10^k, about one per kTickSpacingPx, following zoom and pan.
+        constexpr double kTickSpacingPx = 90.0, kTickPx = 5.0;
+        const auto niceStep = [](double span, double pixels) {
+            const double raw = std::abs(span) * kTickSpacingPx / std::max(pixels, 1.0);
+            const double decade = std::pow(10.0, std::floor(std::log10(raw)));
+            for (const double m : {1.0, 2.0, 5.0})
+                if (m * decade >= raw) return m * decade;
+            return 10.0 * decade;
+        };
+        const auto tickText = [](double v, double step) {
+            return QString::number(std::abs(v) < 1e-6 * step ? 0.0 : v, 'g', 4);
+        };
+        const QFontMetricsF metrics(painter.font());
+        const double line = metrics.height();
+        const QRectF shown = box.intersected(QRectF(QPointF(0, 0), transform_.size()));
+        const QPointF low = transform_.toWorld(shown.bottomLeft()),
+                      high = transform_.toWorld(shown.topRight());
         painter.setPen(kWalls);
-        painter.drawText(box.adjusted(4, 0, -4, -4), Qt::AlignRight | Qt::AlignBottom,
-                         QString::fromStdString(scene_.xLabel));
-        painter.drawText(box.adjusted(4, 4, 0, 0), Qt::AlignLeft | Qt::AlignTop,
-                         QString::fromStdString(scene_.yLabel));
+        double numbersWidth = 0; // of the y tick values, so the y label starts beside them
+        if (shown.width() > 0 && shown.height() > 0 && high.x() > low.x() && high.y() > low.y()) {
+            const double dx = niceStep(high.x() - low.x(), shown.width());
+            for (double v = std::ceil(low.x() / dx) * dx; v <= high.x() + 1e-9 * dx; v += dx) {
+                const double px = transform_.toWidget(v, 0).x();
+                painter.drawLine(QPointF(px, shown.bottom()), QPointF(px, shown.bottom() - kTickPx));
+                painter.drawText(QRectF(px - 4 * line, shown.bottom() - kTickPx - line, 8 * line, line),
+                                 Qt::AlignCenter, tickText(v, dx));
+            }
+            const double dy = niceStep(high.y() - low.y(), shown.height());
+            for (double v = std::ceil(low.y() / dy) * dy; v <= high.y() + 1e-9 * dy; v += dy) {
+                const double py = transform_.toWidget(0, v).y();
+                const QString text = tickText(v, dy);
+                painter.drawLine(QPointF(shown.left(), py), QPointF(shown.left() + kTickPx, py));
+                painter.drawText(QRectF(shown.left() + kTickPx + 2, py - 0.5 * line, 8 * line, line),
+                                 Qt::AlignLeft | Qt::AlignVCenter, text);
+                numbersWidth = std::max(numbersWidth, metrics.horizontalAdvance(text));
+            }
+        }
+        // The axis names sit clear of the tick values: x above the bottom row, y right of the left column.
+        painter.drawText(shown.adjusted(4, 0, -4, -(kTickPx + line + 2)), Qt::AlignRight | Qt::AlignBottom,
+                         coreText(scene_.xLabel));
+        painter.drawText(shown.adjusted(kTickPx + numbersWidth + 12, 4, 0, 0), Qt::AlignLeft | Qt::AlignTop,
+                         coreText(scene_.yLabel));
     }
     if (!scene_.hint.empty()) {
         // The seed's faint instruction: large, bold, 20 % opaque, out of the way once there is fluid.
@@ -313,7 +350,7 @@ void ViewportCore::paintOverlay(QPainter& painter) const {
         painter.save();
         painter.setFont(font);
         painter.setPen(QColor(255, 255, 255, 51));
-        painter.drawText(box, Qt::AlignCenter | Qt::TextWordWrap, QString::fromStdString(scene_.hint));
+        painter.drawText(box, Qt::AlignCenter | Qt::TextWordWrap, coreText(scene_.hint));
         painter.restore();
     }
     for (std::size_t i = 0; i < scene_.obstacles.size(); ++i) {
@@ -328,15 +365,17 @@ void ViewportCore::paintOverlay(QPainter& painter) const {
             painter.drawRect(transform_.toWidget(o.x - o.halfWidth, o.y - o.halfHeight, o.x + o.halfWidth,
                                                  o.y + o.halfHeight));
     }
+    paintSteeredTarget(painter);
     if (scene_.pistonX) {
         const double x = transform_.toWidget(*scene_.pistonX, 0).x();
         painter.setPen(QPen(kWalls, gesture_ == Gesture::DragPiston ? 6 : 4));
         painter.drawLine(QPointF(x, box.top()), QPointF(x, box.bottom()));
     }
-    if (gesture_ == Gesture::Rectangle) { // the fluid seed's semi-transparent spawn preview
+    if (gesture_ == Gesture::Rectangle || gesture_ == Gesture::Pour) { // the seed's spawn preview
         painter.setPen(QPen(QColor(255, 255, 255, 200), 1, Qt::DashLine));
-        painter.setBrush(tool_ == ViewportTool::Spawn ? QColor(255, 255, 255, 60)
-                                                      : QColor(120, 128, 150, 120));
+        painter.setBrush(tool_ == ViewportTool::Spawn || gesture_ == Gesture::Pour
+                             ? QColor(255, 255, 255, 60)
+                             : QColor(120, 128, 150, 120));
         painter.drawRect(QRectF(pressPx_, currentPx_).normalized());
     }
     if (tool_ == ViewportTool::AddDisc && gesture_ == Gesture::None && widget_->underMouse()) {
@@ -347,6 +386,25 @@ void ViewportCore::paintOverlay(QPainter& painter) const {
         painter.drawEllipse(currentPx_, r, r);
     }
     paintLegend(painter);
+}
+
+void ViewportCore::paintSteeredTarget(QPainter& painter) const {
+    // Where a dragged obstacle is heading: it follows the hand at the tool speed, so it may lag behind.
+    SceneTools* tools = controller_->model() ? controller_->model()->tools() : nullptr;
+    if (!steeredTo_ || !tools || !tools->bodiesMoving() || grabbed_ >= scene_.obstacles.size()) return;
+    const Obstacle& o = scene_.obstacles[grabbed_];
+    painter.save();
+    painter.setPen(QPen(kWalls, 1.0, Qt::DashLine));
+    painter.setBrush(Qt::NoBrush);
+    const double x = steeredTo_->x(), y = steeredTo_->y();
+    if (o.shape == Obstacle::Shape::Disc)
+        painter.drawEllipse(transform_.toWidget(x, y), transform_.scale() * o.radius,
+                            transform_.scale() * o.radius);
+    else
+        painter.drawRect(
+            transform_.toWidget(x - o.halfWidth, y - o.halfHeight, x + o.halfWidth, y + o.halfHeight));
+    painter.drawLine(transform_.toWidget(o.x, o.y), transform_.toWidget(x, y));
+    painter.restore();
 }
 
 void ViewportCore::paintLegend(QPainter& painter) const {
@@ -367,7 +425,7 @@ void ViewportCore::paintLegend(QPainter& painter) const {
             painter.drawEllipse(QPointF(frame.left() + 0.7 * line, y + 0.5 * line), 0.3 * line, 0.3 * line);
             painter.setPen(Qt::white);
             painter.drawText(QRectF(frame.left() + 1.4 * line, y, width - 1.6 * line, line), Qt::AlignVCenter,
-                             QString::fromStdString(scene_.categories[c]));
+                             coreText(scene_.categories[c]));
         }
         return;
     }
@@ -385,7 +443,7 @@ void ViewportCore::paintLegend(QPainter& painter) const {
     painter.setPen(Qt::white);
     const QRectF labels(bar.left(), bar.bottom() + 0.1 * line, bar.width(), line);
     painter.drawText(labels, Qt::AlignLeft | Qt::AlignVCenter, QStringLiteral("0"));
-    painter.drawText(labels, Qt::AlignHCenter | Qt::AlignVCenter, QString::fromStdString(scene_.colourLabel));
+    painter.drawText(labels, Qt::AlignHCenter | Qt::AlignVCenter, coreText(scene_.colourLabel));
     painter.drawText(labels, Qt::AlignRight | Qt::AlignVCenter, QString::number(scene_.colourMax, 'g', 3));
 }
 

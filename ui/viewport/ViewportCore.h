@@ -54,10 +54,14 @@ private:
     void press(QMouseEvent* event);
     void move(QMouseEvent* event);
     void release(QMouseEvent* event);
-    void applyPendingDrag(); // once per frame: the obstacle moves with the velocity of the mouse
+    // Hands the target to the model: running, it moves the body there at its tool speed; paused, the
+    // body is placed at once.
+    void steerObstacle(QPointF target);
+    void steerPiston(double x);
     std::optional<std::size_t> obstacleAt(QPointF world) const;
     bool nearPiston(QPointF widgetPoint) const;
     void paintLegend(QPainter& painter) const;
+    void paintSteeredTarget(QPainter& painter) const;
     void updateCursor();
     void edited();
 
@@ -68,12 +72,12 @@ private:
     ViewportTool tool_ = ViewportTool::Drag;
 
     // Gesture state
-    enum class Gesture { None, DragObstacle, DragPiston, Rectangle, Pan };
+    // Pour: a spawn rectangle drawn with the Drag tool where the scene pours on drag (SceneView::dragPours).
+    enum class Gesture { None, DragObstacle, DragPiston, Rectangle, Pour, Pan };
     Gesture gesture_ = Gesture::None;
     std::size_t grabbed_ = 0;
-    QPointF grabOffset_;                // obstacle centre − mouse, in world units
-    std::optional<QPointF> dragTarget_; // where the obstacle should be at the next frame
-    double lastDragTime_ = 0.0;
+    QPointF grabOffset_;               // obstacle centre − mouse, in world units
+    std::optional<QPointF> steeredTo_; // the last target handed to the model while time ran
     QPointF pressPx_, currentPx_;
     std::optional<std::size_t> hovered_;
 

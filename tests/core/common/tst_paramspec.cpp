@@ -100,6 +100,29 @@ private slots:
         }
         QVERIFY_THROWS_EXCEPTION(ParamError, (void)withValues(base, fields, {{"colour", 1.0}}));
     }
+    void errorsNameParametersByKeyOrByLabel() {
+        // The command line reads keys as it always did; the panel reads each parameter's label.
+        const ParamError e("count_a", "{count_a} + {count_b} = 9 exceeds '{max_particles}' = 8 {not a key}");
+        QCOMPARE(std::string(e.what()),
+                 std::string("count_a + count_b = 9 exceeds 'max_particles' = 8 {not a key}"));
+        const auto label = [](const std::string& key) {
+            return key == "count_a" ? "Disks (A)" : "[" + key + "]";
+        };
+        QCOMPARE(nameParameters(e.message(), label),
+                 std::string("Disks (A) + [count_b] = 9 exceeds [max_particles] = 8 {not a key}"));
+        try {
+            (void)withValues(Sample{}, sampleFields(), {{"speed", 50.0}});
+            QFAIL("out-of-range value accepted");
+        } catch (const ParamError& e) {
+            QCOMPARE(nameParameters(e.message(), label).rfind("[speed] is out of range: 50", 0),
+                     std::size_t(0));
+        }
+    }
+    void smallNumbersKeepTheirDigits() {
+        QCOMPARE(formatNumber(0.00012345, 3), std::string("0.000123"));
+        QCOMPARE(formatNumber(1.5e-9, 2), std::string("1.5e-09"));
+        QCOMPARE(formatNumber(2500, 6), std::string("2500"));
+    }
 };
 
 QTEST_APPLESS_MAIN(TestParamSpec)

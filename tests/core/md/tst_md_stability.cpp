@@ -48,6 +48,20 @@ private slots:
         QCOMPARE(model.stepCount(), stopped);
     }
 
+    void hintKeepsSmallNumbersReadable() {
+        // ω dt = 447 · 0.5 = 224: π / (ω dt) = 0.014 steps per contact, which one decimal printed as 0.0.
+        MdModel model = classroomWith({{"dt", 0.5}});
+        runUntilFailure(model, 50);
+        QVERIFY(model.failure());
+        const std::string hint = model.failure()->hint;
+        const auto about = hint.find("(about ");
+        const auto below = hint.find("|dt| < ");
+        QVERIFY2(about != std::string::npos && below != std::string::npos, hint.c_str());
+        const double perContact = std::stod(hint.substr(about + 7));
+        QVERIFY2(perContact > 0.013 && perContact < 0.015, hint.c_str());
+        QVERIFY2(std::stod(hint.substr(below + 7)) > 0.0, hint.c_str()); // 2 / ω = 0.0045
+    }
+
     void explicitEulerIsExplained() {
         MdModel model = classroomWith({{"integrator", std::string("explicit-euler")}});
         runUntilFailure(model, 20000);

@@ -1,0 +1,29 @@
+// Strict checks of the command line's numbers and paths, so every bad value is refused with a plain
+// sentence (and exit code 2) before anything runs.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <string>
+
+namespace pl::cli {
+
+// The longest run or sweep the CLI starts: 10⁹ steps are days of computing even for a small scene.
+constexpr long long kMaxSteps = 1'000'000'000;
+
+// A whole number in [lo, hi], written in digits or as an exact power notation ("20000", "2e4"); the
+// value is rewritten in digits for CLI11. why says where the bounds come from.
+CLI::Validator wholeNumber(long long lo, long long hi, const std::string& why = "");
+// A finite number above 0 (or at least 0 when zeroAllowed); no spaces, no hexadecimal.
+CLI::Validator positiveReal(bool zeroAllowed = false);
+// A file name that is not empty.
+CLI::Validator fileName();
+// Threads for OpenMP: 1 … 4 × the cores of this machine.
+CLI::Validator threadCount();
+int maxThreads();
+
+// A strictly written finite or non-finite number: the whole text, decimal, optional sign and exponent.
+// Returns false for anything else ("", " 1", "0x10", "1e", "5 ").
+bool parseStrictNumber(const std::string& text, double& value);
+
+} // namespace pl::cli

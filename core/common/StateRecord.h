@@ -1,0 +1,45 @@
+// A model's dynamic state as named numbers and arrays: what a snapshot keeps beyond the preset so that a
+// restored model continues bit for bit. Every value is a double; integers up to 2⁵³ (ids, counters,
+// indices) are exact in one, and the snapshot file prints doubles so that they read back unchanged.
+#pragma once
+
+#include "Preset.h"
+
+#include <cmath>
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace pl {
+
+struct StateRecord {
+    std::map<std::string, double> scalars;
+    std::map<std::string, std::vector<double>> arrays;
+
+    template <class T> void put(const std::string& key, const std::vector<T>& values) {
+        arrays[key].assign(values.begin(), values.end());
+    }
+    void put(const std::string& key, double value) { scalars[key] = value; }
+
+    // The scalar named key; throws PresetError ("state.key") when it is missing.
+    double scalar(const std::string& key) const;
+    // The array named key as T, with `size` entries (any size when size is SIZE_MAX); throws PresetError
+    // when it is missing, has another length, or holds a value T cannot represent exactly.
+    template <class T> std::vector<T> array(const std::string& key, std::size_t size = SIZE_MAX) const {
+        const std::vector<double>& values = rawArray(key, size);
+        std::vector<T> out(values.size());
+        for (std::size_t i = 0; i < values.size(); ++i) {
+            out[i] = static_cast<T>(values[i]);
+            if (static_cast<double>(out[i]) != values[i] && !(std::isnan(values[i])))
+                throw PresetError("state." + key, "state." + key + "[" + std::to_string(i) +
+                                                      "] is not a valid value for this field");
+        }
+        return out;
+    }
+
+private:
+    const std::vector<double>& rawArray(const std::string& key, std::size_t size) const;
+};
+
+} // namespace pl

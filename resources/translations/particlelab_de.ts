@@ -1,0 +1,2563 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1" language="de_DE">
+<context>
+    <name>QObject</name>
+    <message>
+        <source>
+Allowed: %1</source>
+        <translation>
+Erlaubt: %1</translation>
+    </message>
+    <message>
+        <source>
+Takes effect at once.</source>
+        <translation>
+Wirkt sofort.</translation>
+    </message>
+    <message>
+        <source>
+Takes effect on Reset.</source>
+        <translation>
+Wirkt nach „Zurücksetzen“.</translation>
+    </message>
+    <message>
+        <source>Cannot write %1: %2</source>
+        <translation>%1 kann nicht geschrieben werden: %2</translation>
+    </message>
+    <message>
+        <source>Cannot encode the PNG image.</source>
+        <translation>Das PNG-Bild kann nicht kodiert werden.</translation>
+    </message>
+    <message>
+        <source>Cannot start the SVG renderer.</source>
+        <translation>Der SVG-Renderer kann nicht gestartet werden.</translation>
+    </message>
+    <message>
+        <source>Cannot start the PDF renderer.</source>
+        <translation>Der PDF-Renderer kann nicht gestartet werden.</translation>
+    </message>
+    <message>
+        <source>The image must be at least 16 × 16 pixels at 24 DPI or more.</source>
+        <translation>Das Bild muss mindestens 16 × 16 Pixel bei 24 DPI oder mehr haben.</translation>
+    </message>
+    <message>
+        <source>Unknown image format &apos;.%1&apos;: use .png, .svg or .pdf.</source>
+        <translation>Unbekanntes Bildformat „.%1“: .png, .svg oder .pdf verwenden.</translation>
+    </message>
+    <message>
+        <source>Save plot image</source>
+        <translation>Diagramm als Bild speichern</translation>
+    </message>
+    <message>
+        <source>PNG image (*.png);;SVG drawing (*.svg);;PDF document (*.pdf)</source>
+        <translation>PNG-Bild (*.png);;SVG-Zeichnung (*.svg);;PDF-Dokument (*.pdf)</translation>
+    </message>
+    <message>
+        <source>Cannot save the image</source>
+        <translation>Das Bild kann nicht gespeichert werden</translation>
+    </message>
+    <message>
+        <source>Export plot data</source>
+        <translation>Diagrammdaten exportieren</translation>
+    </message>
+    <message>
+        <source>CSV table (*.csv)</source>
+        <translation>CSV-Tabelle (*.csv)</translation>
+    </message>
+    <message>
+        <source>Cannot export the data</source>
+        <translation>Die Daten können nicht exportiert werden</translation>
+    </message>
+    <message>
+        <source>Save image (PNG, SVG, PDF)…</source>
+        <translation>Bild speichern (PNG, SVG, PDF)…</translation>
+    </message>
+    <message>
+        <source>Export data as CSV…</source>
+        <translation>Daten als CSV exportieren…</translation>
+    </message>
+    <message>
+        <source>N</source>
+        <translation>N</translation>
+    </message>
+    <message>
+        <source>kT</source>
+        <translation>kT</translation>
+    </message>
+    <message>
+        <source>P</source>
+        <translation>P</translation>
+    </message>
+    <message>
+        <source>t</source>
+        <translation>t</translation>
+    </message>
+    <message>
+        <source>K</source>
+        <translation>K</translation>
+    </message>
+    <message>
+        <source>collisions per particle</source>
+        <translation>Stöße pro Teilchen</translation>
+    </message>
+    <message>
+        <source>step</source>
+        <translation>Schritt</translation>
+    </message>
+    <message>
+        <source>density error</source>
+        <translation>Dichtefehler</translation>
+    </message>
+    <message>
+        <source>%</source>
+        <translation>%</translation>
+    </message>
+    <message>
+        <source>worst density error</source>
+        <translation>größter Dichtefehler</translation>
+    </message>
+    <message>
+        <source>s</source>
+        <translation>s</translation>
+    </message>
+    <message>
+        <source>Tₓ</source>
+        <translation>Tₓ</translation>
+    </message>
+    <message>
+        <source>T⊥</source>
+        <translation>T⊥</translation>
+    </message>
+</context>
+<context>
+    <name>pl::core</name>
+    <message>
+        <source>3: molecules scatter isotropically in space; 2: velocities and scattering stay in the plane, like the 2D disk gas (for comparing the two).</source>
+        <translation>3: Moleküle streuen isotrop im Raum; 2: Geschwindigkeiten und Streuung bleiben in der Ebene, wie beim 2D-Scheibengas (zum Vergleich der beiden).</translation>
+    </message>
+    <message>
+        <source>A spawned disk overlapping another by more than this fraction of a diameter is refused.</source>
+        <translation>Eine erzeugte Scheibe, die eine andere um mehr als diesen Bruchteil eines Durchmessers überlappt, wird abgelehnt.</translation>
+    </message>
+    <message>
+        <source>Added to the constraint&apos;s gradient norm; larger is softer (seed 100).</source>
+        <translation>Wird zur Gradientennorm der Nebenbedingung addiert; größer ist weicher (Original: 100).</translation>
+    </message>
+    <message>
+        <source>BKW gas</source>
+        <translation>BKW-Gas</translation>
+    </message>
+    <message>
+        <source>Beam 1 velocity</source>
+        <translation>Geschwindigkeit Strahl 1</translation>
+    </message>
+    <message>
+        <source>Beam 2 velocity</source>
+        <translation>Geschwindigkeit Strahl 2</translation>
+    </message>
+    <message>
+        <source>Bins of the speed histogram (seed 25).</source>
+        <translation>Klassen des Geschwindigkeitshistogramms (Original: 25).</translation>
+    </message>
+    <message>
+        <source>Bins of the speed histogram.</source>
+        <translation>Klassen des Geschwindigkeitshistogramms.</translation>
+    </message>
+    <message>
+        <source>Blow-up factor</source>
+        <translation>Abbruchfaktor</translation>
+    </message>
+    <message>
+        <source>Bottom edge of the fluid present at t = 0.</source>
+        <translation>Unterkante der Flüssigkeit bei t = 0.</translation>
+    </message>
+    <message>
+        <source>Box</source>
+        <translation>Behälter</translation>
+    </message>
+    <message>
+        <source>Box height</source>
+        <translation>Behälterhöhe</translation>
+    </message>
+    <message>
+        <source>Box width</source>
+        <translation>Behälterbreite</translation>
+    </message>
+    <message>
+        <source>Cell volume</source>
+        <translation>Zellvolumen</translation>
+    </message>
+    <message>
+        <source>Click and drag to pour fluid</source>
+        <translation>Klicken und ziehen, um Flüssigkeit einzugießen</translation>
+    </message>
+    <message>
+        <source>Collision time step; keep ν Δt well below 1 (seed 2e-5).</source>
+        <translation>Zeitschritt der Stöße; ν Δt deutlich unter 1 halten (Original: 2e-5).</translation>
+    </message>
+    <message>
+        <source>Collisions</source>
+        <translation>Stöße</translation>
+    </message>
+    <message>
+        <source>Colour (A)</source>
+        <translation>Farbe (A)</translation>
+    </message>
+    <message>
+        <source>Colour (B)</source>
+        <translation>Farbe (B)</translation>
+    </message>
+    <message>
+        <source>Colour of this species when disks are coloured by species.</source>
+        <translation>Farbe dieser Teilchensorte, wenn die Scheiben nach Sorte gefärbt werden.</translation>
+    </message>
+    <message>
+        <source>Colour scale top</source>
+        <translation>Obergrenze der Farbskala</translation>
+    </message>
+    <message>
+        <source>Contact diameter of one A disk. The seed uses 0.01.</source>
+        <translation>Kontaktdurchmesser einer A-Scheibe. Das Original verwendet 0.01.</translation>
+    </message>
+    <message>
+        <source>Contact diameter of one B disk.</source>
+        <translation>Kontaktdurchmesser einer B-Scheibe.</translation>
+    </message>
+    <message>
+        <source>Cross-section</source>
+        <translation>Stoßquerschnitt</translation>
+    </message>
+    <message>
+        <source>Diameter (A)</source>
+        <translation>Durchmesser (A)</translation>
+    </message>
+    <message>
+        <source>Diameter (B)</source>
+        <translation>Durchmesser (B)</translation>
+    </message>
+    <message>
+        <source>Disks (A)</source>
+        <translation>Scheiben (A)</translation>
+    </message>
+    <message>
+        <source>Disks (B)</source>
+        <translation>Scheiben (B)</translation>
+    </message>
+    <message>
+        <source>Display</source>
+        <translation>Darstellung</translation>
+    </message>
+    <message>
+        <source>Downward acceleration; 0 for none.</source>
+        <translation>Beschleunigung nach unten; 0 für keine.</translation>
+    </message>
+    <message>
+        <source>Drag speed limit</source>
+        <translation>Höchstgeschwindigkeit beim Ziehen</translation>
+    </message>
+    <message>
+        <source>Drain over the cap</source>
+        <translation>Abfluss über der Obergrenze</translation>
+    </message>
+    <message>
+        <source>Exponent of the artificial pressure (seed 4).</source>
+        <translation>Exponent des künstlichen Drucks (Original: 4).</translation>
+    </message>
+    <message>
+        <source>Fastest a dragged obstacle moves, in units of the wave speed √(g H) of a tank-deep layer: the fluid always meets a wall of finite speed, whatever the frame rate.</source>
+        <translation>Höchstgeschwindigkeit eines gezogenen Hindernisses in Einheiten der Wellengeschwindigkeit √(g H) einer beckentiefen Schicht: Die Flüssigkeit trifft stets auf eine Wand endlicher Geschwindigkeit, unabhängig von der Bildrate.</translation>
+    </message>
+    <message>
+        <source>Fastest a dragged obstacle or the piston moves, in units of the initial rms speed: the disks always meet a wall of finite speed, whatever the frame rate.</source>
+        <translation>Höchstgeschwindigkeit eines gezogenen Hindernisses oder des Kolbens in Einheiten der anfänglichen quadratisch gemittelten Geschwindigkeit: Die Scheiben treffen stets auf eine Wand endlicher Geschwindigkeit, unabhängig von der Bildrate.</translation>
+    </message>
+    <message>
+        <source>First guess of (σ c_r)_max (the seed: 1e-18); 0 estimates it from the initial state. It is raised whenever a pair exceeds it.</source>
+        <translation>Erste Schätzung von (σ c_r)_max (Original: 1e-18); 0 schätzt ihn aus dem Anfangszustand. Er wird erhöht, sobald ein Paar ihn übertrifft.</translation>
+    </message>
+    <message>
+        <source>Fluid (position-based)</source>
+        <translation>Flüssigkeit (positionsbasiert)</translation>
+    </message>
+    <message>
+        <source>Force search</source>
+        <translation>Kraftsuche</translation>
+    </message>
+    <message>
+        <source>Gas (molecular dynamics)</source>
+        <translation>Gas (Molekulardynamik)</translation>
+    </message>
+    <message>
+        <source>Gas and cell</source>
+        <translation>Gas und Zelle</translation>
+    </message>
+    <message>
+        <source>Gravity</source>
+        <translation>Schwerkraft</translation>
+    </message>
+    <message>
+        <source>Gravity on</source>
+        <translation>Schwerkraft an</translation>
+    </message>
+    <message>
+        <source>Gravity x</source>
+        <translation>Schwerkraft x</translation>
+    </message>
+    <message>
+        <source>Gravity y</source>
+        <translation>Schwerkraft y</translation>
+    </message>
+    <message>
+        <source>Grid spacing of spawned fluid in units of h (seed 0.8).</source>
+        <translation>Gitterabstand erzeugter Flüssigkeit in Einheiten von h (Original: 0.8).</translation>
+    </message>
+    <message>
+        <source>Hard-sphere diameter</source>
+        <translation>Harte-Kugel-Durchmesser</translation>
+    </message>
+    <message>
+        <source>Height of the container; the seed&apos;s box is 2 high.</source>
+        <translation>Höhe des Behälters; der Behälter des Originals ist 2 hoch.</translation>
+    </message>
+    <message>
+        <source>Height of the tank (seed 40).</source>
+        <translation>Höhe des Beckens (Original: 40).</translation>
+    </message>
+    <message>
+        <source>Histogram bins</source>
+        <translation>Histogrammklassen</translation>
+    </message>
+    <message>
+        <source>Histogram range</source>
+        <translation>Histogrammbereich</translation>
+    </message>
+    <message>
+        <source>Horizontal component of gravity.</source>
+        <translation>Waagerechte Komponente der Schwerkraft.</translation>
+    </message>
+    <message>
+        <source>Include W(0) in each particle&apos;s density, as SPH does (the seed omits it).</source>
+        <translation>W(0) in die Dichte jedes Teilchens einbeziehen, wie bei SPH (das Original lässt ihn weg).</translation>
+    </message>
+    <message>
+        <source>Initial (σ c_r)_max</source>
+        <translation>Anfängliches (σ c_r)_max</translation>
+    </message>
+    <message>
+        <source>Initial block x₀</source>
+        <translation>Anfangsblock x₀</translation>
+    </message>
+    <message>
+        <source>Initial block x₁</source>
+        <translation>Anfangsblock x₁</translation>
+    </message>
+    <message>
+        <source>Initial block y₀</source>
+        <translation>Anfangsblock y₀</translation>
+    </message>
+    <message>
+        <source>Initial block y₁</source>
+        <translation>Anfangsblock y₁</translation>
+    </message>
+    <message>
+        <source>Initial kT</source>
+        <translation>Anfangs-kT</translation>
+    </message>
+    <message>
+        <source>Initial placement</source>
+        <translation>Anfangsanordnung</translation>
+    </message>
+    <message>
+        <source>Initial speed</source>
+        <translation>Anfangsgeschwindigkeit</translation>
+    </message>
+    <message>
+        <source>Initial state</source>
+        <translation>Anfangszustand</translation>
+    </message>
+    <message>
+        <source>Initial velocities</source>
+        <translation>Anfangsgeschwindigkeiten</translation>
+    </message>
+    <message>
+        <source>Integration</source>
+        <translation>Integration</translation>
+    </message>
+    <message>
+        <source>Integrator</source>
+        <translation>Integrator</translation>
+    </message>
+    <message>
+        <source>Interaction</source>
+        <translation>Wechselwirkung</translation>
+    </message>
+    <message>
+        <source>Iterations</source>
+        <translation>Iterationen</translation>
+    </message>
+    <message>
+        <source>Jacobi iterations of the density constraint per step (seed 5).</source>
+        <translation>Jacobi-Iterationen der Dichtebedingung pro Schritt (Original: 5).</translation>
+    </message>
+    <message>
+        <source>Kernel constants</source>
+        <translation>Kernkonstanten</translation>
+    </message>
+    <message>
+        <source>Kernel radius h</source>
+        <translation>Kernradius h</translation>
+    </message>
+    <message>
+        <source>Left edge of the fluid present at t = 0.</source>
+        <translation>Linke Kante der Flüssigkeit bei t = 0.</translation>
+    </message>
+    <message>
+        <source>Limits</source>
+        <translation>Grenzen</translation>
+    </message>
+    <message>
+        <source>Mass (A)</source>
+        <translation>Masse (A)</translation>
+    </message>
+    <message>
+        <source>Mass (B)</source>
+        <translation>Masse (B)</translation>
+    </message>
+    <message>
+        <source>Mass of one A disk.</source>
+        <translation>Masse einer A-Scheibe.</translation>
+    </message>
+    <message>
+        <source>Mass of one B disk.</source>
+        <translation>Masse einer B-Scheibe.</translation>
+    </message>
+    <message>
+        <source>Mass of one molecule; O2 is 32.</source>
+        <translation>Masse eines Moleküls; O2 hat 32.</translation>
+    </message>
+    <message>
+        <source>Maxwell σ c_r</source>
+        <translation>Maxwell-σ c_r</translation>
+    </message>
+    <message>
+        <source>Molecular diameter of the hard-sphere model.</source>
+        <translation>Moleküldurchmesser im Modell harter Kugeln.</translation>
+    </message>
+    <message>
+        <source>Molecular mass</source>
+        <translation>Molekülmasse</translation>
+    </message>
+    <message>
+        <source>Most disks the scene may hold; spawning stops here.</source>
+        <translation>Höchstzahl der Scheiben in der Szene; darüber wird nichts mehr erzeugt.</translation>
+    </message>
+    <message>
+        <source>Most particles in the tank (seed 3000).</source>
+        <translation>Höchstzahl der Teilchen im Becken (Original: 3000).</translation>
+    </message>
+    <message>
+        <source>Neighbour radius / h</source>
+        <translation>Nachbarradius / h</translation>
+    </message>
+    <message>
+        <source>Neighbours are searched within this multiple of h (seed 1.05).</source>
+        <translation>Nachbarn werden innerhalb dieses Vielfachen von h gesucht (Original: 1.05).</translation>
+    </message>
+    <message>
+        <source>Number of disks of species A; the seed has 4096.</source>
+        <translation>Anzahl der Scheiben der Sorte A; das Original hat 4096.</translation>
+    </message>
+    <message>
+        <source>Number of disks of species B; 0 for a one-species gas.</source>
+        <translation>Anzahl der Scheiben der Sorte B; 0 für ein Gas aus einer Sorte.</translation>
+    </message>
+    <message>
+        <source>Observation</source>
+        <translation>Beobachtung</translation>
+    </message>
+    <message>
+        <source>On: the lowest particles drain away over the cap (the seed); off: spawns over the cap are refused.</source>
+        <translation>An: Über der Obergrenze fließen die untersten Teilchen ab (wie im Original); aus: Erzeugen über der Obergrenze wird abgelehnt.</translation>
+    </message>
+    <message>
+        <source>Particle cap</source>
+        <translation>Teilchenobergrenze</translation>
+    </message>
+    <message>
+        <source>Particle radius</source>
+        <translation>Teilchenradius</translation>
+    </message>
+    <message>
+        <source>Particle weight F_N</source>
+        <translation>Teilchengewicht F_N</translation>
+    </message>
+    <message>
+        <source>Particles</source>
+        <translation>Teilchen</translation>
+    </message>
+    <message>
+        <source>Particles (beam 1)</source>
+        <translation>Teilchen (Strahl 1)</translation>
+    </message>
+    <message>
+        <source>Particles (beam 2)</source>
+        <translation>Teilchen (Strahl 2)</translation>
+    </message>
+    <message>
+        <source>Piston</source>
+        <translation>Kolben</translation>
+    </message>
+    <message>
+        <source>Piston position</source>
+        <translation>Kolbenposition</translation>
+    </message>
+    <message>
+        <source>Piston speed</source>
+        <translation>Kolbengeschwindigkeit</translation>
+    </message>
+    <message>
+        <source>Pressure window</source>
+        <translation>Mittelungszeit des Drucks</translation>
+    </message>
+    <message>
+        <source>Rarefied gas (DSMC)</source>
+        <translation>Verdünntes Gas (DSMC)</translation>
+    </message>
+    <message>
+        <source>Re-injects vorticity lost to damping; 0: off, as in the seed.</source>
+        <translation>Führt durch Dämpfung verlorene Wirbelstärke wieder zu; 0: aus, wie im Original.</translation>
+    </message>
+    <message>
+        <source>Real molecules each simulated particle stands for (seed 5e8).</source>
+        <translation>Reale Moleküle, für die jedes simulierte Teilchen steht (Original: 5e8).</translation>
+    </message>
+    <message>
+        <source>Reference distance of the artificial pressure (seed 0.3).</source>
+        <translation>Bezugsabstand des künstlichen Drucks (Original: 0.3).</translation>
+    </message>
+    <message>
+        <source>Relaxation ε</source>
+        <translation>Relaxation ε</translation>
+    </message>
+    <message>
+        <source>Replace the right wall by a movable piston.</source>
+        <translation>Die rechte Wand durch einen beweglichen Kolben ersetzen.</translation>
+    </message>
+    <message>
+        <source>Rest density from</source>
+        <translation>Ruhedichte aus</translation>
+    </message>
+    <message>
+        <source>Rest density ρ₀</source>
+        <translation>Ruhedichte ρ₀</translation>
+    </message>
+    <message>
+        <source>Right edge of the initial block; x₁ ≤ x₀ starts empty (the seed).</source>
+        <translation>Rechte Kante des Anfangsblocks; x₁ ≤ x₀ beginnt leer (wie im Original).</translation>
+    </message>
+    <message>
+        <source>Run length</source>
+        <translation>Laufdauer</translation>
+    </message>
+    <message>
+        <source>Self term in ρ</source>
+        <translation>Eigenterm in ρ</translation>
+    </message>
+    <message>
+        <source>Signed step; negative runs time backwards. The seed uses 1e-4.</source>
+        <translation>Vorzeichenbehafteter Schritt; negativ lässt die Zeit rückwärts laufen. Das Original verwendet 1e-4.</translation>
+    </message>
+    <message>
+        <source>Simulated particles of beam 1, or of the single gas.</source>
+        <translation>Simulierte Teilchen von Strahl 1 oder des einzelnen Gases.</translation>
+    </message>
+    <message>
+        <source>Simulated particles of beam 2 (two-beams only).</source>
+        <translation>Simulierte Teilchen von Strahl 2 (nur bei two-beams).</translation>
+    </message>
+    <message>
+        <source>Solver</source>
+        <translation>Löser</translation>
+    </message>
+    <message>
+        <source>Spawn overlap limit</source>
+        <translation>Überlappungsgrenze beim Erzeugen</translation>
+    </message>
+    <message>
+        <source>Spawn spacing / h</source>
+        <translation>Erzeugungsabstand / h</translation>
+    </message>
+    <message>
+        <source>Species A</source>
+        <translation>Sorte A</translation>
+    </message>
+    <message>
+        <source>Species B</source>
+        <translation>Sorte B</translation>
+    </message>
+    <message>
+        <source>Speed drawn fully red (seed 5).</source>
+        <translation>Geschwindigkeit, die voll rot gezeichnet wird (Original: 5).</translation>
+    </message>
+    <message>
+        <source>Speed of Compress and Expand, in units of the initial rms speed: well below 1 the gas follows the adiabat T·A = const; near 1 it heats more.</source>
+        <translation>Geschwindigkeit von Verdichten und Entspannen in Einheiten der anfänglichen quadratisch gemittelten Geschwindigkeit: deutlich unter 1 folgt das Gas der Adiabate T·A = const; nahe 1 erwärmt es sich stärker.</translation>
+    </message>
+    <message>
+        <source>Speed of every disk for fixed-speed starts; the seed uses 1.</source>
+        <translation>Geschwindigkeit jeder Scheibe beim Start fixed-speed; das Original verwendet 1.</translation>
+    </message>
+    <message>
+        <source>Spring constant of the harmonic repulsion U = k/2 (d − r)²; the seed uses 1000.</source>
+        <translation>Federkonstante der harmonischen Abstoßung U = k/2 (d − r)²; das Original verwendet 1000.</translation>
+    </message>
+    <message>
+        <source>Step Δt (seed 1/20 = 0.05).</source>
+        <translation>Schritt Δt (Original: 1/20 = 0.05).</translation>
+    </message>
+    <message>
+        <source>Stiffness k</source>
+        <translation>Steifigkeit k</translation>
+    </message>
+    <message>
+        <source>Strength of the artificial pressure (seed 0.001); 0: off.</source>
+        <translation>Stärke des künstlichen Drucks (Original: 0.001); 0: aus.</translation>
+    </message>
+    <message>
+        <source>Support radius of the kernels (seed 1.1); spawn spacing is 0.8 h.</source>
+        <translation>Trägerradius der Kerne (Original: 1.1); der Erzeugungsabstand ist 0.8 h.</translation>
+    </message>
+    <message>
+        <source>Target density with unit masses (seed 1).</source>
+        <translation>Zieldichte bei Einheitsmassen (Original: 1).</translation>
+    </message>
+    <message>
+        <source>Temperature</source>
+        <translation>Temperatur</translation>
+    </message>
+    <message>
+        <source>Temperature at which d = d_ref (273 K).</source>
+        <translation>Temperatur, bei der d = d_ref gilt (273 K).</translation>
+    </message>
+    <message>
+        <source>Temperature of each beam, or of the single gas (seed 5).</source>
+        <translation>Temperatur jedes Strahls oder des einzelnen Gases (Original: 5).</translation>
+    </message>
+    <message>
+        <source>Temperature of maxwell-boltzmann starts and of spawned disks.</source>
+        <translation>Temperatur beim Start maxwell-boltzmann und der erzeugten Scheiben.</translation>
+    </message>
+    <message>
+        <source>Temperature of thermal walls.</source>
+        <translation>Temperatur thermischer Wände.</translation>
+    </message>
+    <message>
+        <source>The constant σ c_r of Maxwell molecules.</source>
+        <translation>Das konstante σ c_r von Maxwell-Molekülen.</translation>
+    </message>
+    <message>
+        <source>The run stops after this many steps (seed 500); 0 runs on.</source>
+        <translation>Der Lauf endet nach so vielen Schritten (Original: 500); 0 läuft unbegrenzt.</translation>
+    </message>
+    <message>
+        <source>The run stops after this many steps; 0 runs on (the seed).</source>
+        <translation>Der Lauf endet nach so vielen Schritten; 0 läuft unbegrenzt (wie im Original).</translation>
+    </message>
+    <message>
+        <source>The run stops when the total energy exceeds this multiple of its reference.</source>
+        <translation>Der Lauf endet, wenn die Gesamtenergie dieses Vielfache ihres Bezugswerts übersteigt.</translation>
+    </message>
+    <message>
+        <source>The seed&apos;s gravity toggle (key G).</source>
+        <translation>Der Schwerkraftschalter des Originals (Taste G).</translation>
+    </message>
+    <message>
+        <source>Time over which wall impulses are averaged into a pressure.</source>
+        <translation>Zeit, über die Wandimpulse zu einem Druck gemittelt werden.</translation>
+    </message>
+    <message>
+        <source>Time step</source>
+        <translation>Zeitschritt</translation>
+    </message>
+    <message>
+        <source>Time-stepping method; velocity Verlet is symplectic and time-reversible.</source>
+        <translation>Zeitschrittverfahren; Velocity-Verlet ist symplektisch und zeitumkehrbar.</translation>
+    </message>
+    <message>
+        <source>Tools</source>
+        <translation>Werkzeuge</translation>
+    </message>
+    <message>
+        <source>Top edge of the initial block.</source>
+        <translation>Oberkante des Anfangsblocks.</translation>
+    </message>
+    <message>
+        <source>Upper end of the speed histogram (seed 450).</source>
+        <translation>Oberes Ende des Geschwindigkeitshistogramms (Original: 450).</translation>
+    </message>
+    <message>
+        <source>VHS T_ref</source>
+        <translation>VHS T_ref</translation>
+    </message>
+    <message>
+        <source>VHS d_ref</source>
+        <translation>VHS d_ref</translation>
+    </message>
+    <message>
+        <source>VHS reference diameter (O2: 4.07e-10).</source>
+        <translation>VHS-Bezugsdurchmesser (O2: 4.07e-10).</translation>
+    </message>
+    <message>
+        <source>VHS ω</source>
+        <translation>VHS ω</translation>
+    </message>
+    <message>
+        <source>Velocity components</source>
+        <translation>Geschwindigkeitskomponenten</translation>
+    </message>
+    <message>
+        <source>Velocity of beam 1 along x (seed 100).</source>
+        <translation>Geschwindigkeit von Strahl 1 in x-Richtung (Original: 100).</translation>
+    </message>
+    <message>
+        <source>Velocity of beam 2 along x (seed 300).</source>
+        <translation>Geschwindigkeit von Strahl 2 in x-Richtung (Original: 300).</translation>
+    </message>
+    <message>
+        <source>Velocity smoothing of the paper (0.01 there); 0: off, as in the seed.</source>
+        <translation>Geschwindigkeitsglättung aus dem Artikel (dort 0.01); 0: aus, wie im Original.</translation>
+    </message>
+    <message>
+        <source>Vertical component of gravity (seed −9.8).</source>
+        <translation>Senkrechte Komponente der Schwerkraft (Original: −9.8).</translation>
+    </message>
+    <message>
+        <source>Viscosity index: 0.5 hard sphere, 1 Maxwell, O2 0.77.</source>
+        <translation>Viskositätsexponent: 0.5 harte Kugel, 1 Maxwell, O2 0.77.</translation>
+    </message>
+    <message>
+        <source>Volume of the collision cell (seed 1e-8).</source>
+        <translation>Volumen der Stoßzelle (Original: 1e-8).</translation>
+    </message>
+    <message>
+        <source>Vorticity confinement ε</source>
+        <translation>Wirbelverstärkung ε</translation>
+    </message>
+    <message>
+        <source>Wall kT</source>
+        <translation>Wand-kT</translation>
+    </message>
+    <message>
+        <source>Walls</source>
+        <translation>Wände</translation>
+    </message>
+    <message>
+        <source>Walls and fields</source>
+        <translation>Wände und Felder</translation>
+    </message>
+    <message>
+        <source>Walls and obstacles keep particle centres this far away (0.3).</source>
+        <translation>Wände und Hindernisse halten Teilchenmittelpunkte so weit entfernt (0.3).</translation>
+    </message>
+    <message>
+        <source>Width of the container; the seed&apos;s box is 2 wide.</source>
+        <translation>Breite des Behälters; der Behälter des Originals ist 2 breit.</translation>
+    </message>
+    <message>
+        <source>Width of the tank (seed 80).</source>
+        <translation>Breite des Beckens (Original: 80).</translation>
+    </message>
+    <message>
+        <source>World</source>
+        <translation>Welt</translation>
+    </message>
+    <message>
+        <source>XSPH viscosity c</source>
+        <translation>XSPH-Viskosität c</translation>
+    </message>
+    <message>
+        <source>all particles</source>
+        <translation>alle Teilchen</translation>
+    </message>
+    <message>
+        <source>cell-list: O(N) neighbour search; all-pairs: the seed&apos;s O(N²) loop, for comparison.</source>
+        <translation>cell-list: Nachbarsuche in O(N); all-pairs: die O(N²)-Schleife des Originals, zum Vergleich.</translation>
+    </message>
+    <message>
+        <source>fixed-speed: every disk at init_speed in a random direction (the seed); maxwell-boltzmann: Gaussian components at init_kT.</source>
+        <translation>fixed-speed: jede Scheibe mit init_speed in zufälliger Richtung (wie im Original); maxwell-boltzmann: gaußverteilte Komponenten bei init_kT.</translation>
+    </message>
+    <message>
+        <source>population</source>
+        <translation>Population</translation>
+    </message>
+    <message>
+        <source>random: uniform positions, overlaps allowed (the seed); lattice: a square lattice, no overlaps.</source>
+        <translation>random: gleichverteilte Orte, Überlappungen erlaubt (wie im Original); lattice: ein Quadratgitter ohne Überlappungen.</translation>
+    </message>
+    <message>
+        <source>reflecting: elastic walls; thermal: disks leave a wall with velocities drawn at wall_kT (heating or cooling).</source>
+        <translation>reflecting: elastische Wände; thermal: Scheiben verlassen eine Wand mit bei wall_kT gezogenen Geschwindigkeiten (heizt oder kühlt).</translation>
+    </message>
+    <message>
+        <source>s_corr k</source>
+        <translation>s_corr k</translation>
+    </message>
+    <message>
+        <source>s_corr n</source>
+        <translation>s_corr n</translation>
+    </message>
+    <message>
+        <source>s_corr Δq / h</source>
+        <translation>s_corr Δq / h</translation>
+    </message>
+    <message>
+        <source>seed-3d: poly6 315/(64π h⁹), spiky 45/(π h⁶), as written (3D constants in 2D); 2d: 4/(π h⁸) and 30/(π h⁵).</source>
+        <translation>seed-3d: poly6 315/(64π h⁹), spiky 45/(π h⁶), wie im Original (3D-Konstanten in 2D); 2d: 4/(π h⁸) und 30/(π h⁵).</translation>
+    </message>
+    <message>
+        <source>seed: σ = 1e-18 c_r^-1/2 m² as written; hard-sphere: σ = π d²; vhs: variable hard sphere (d_ref, T_ref, ω); maxwell: σ c_r constant.</source>
+        <translation>seed: σ = 1e-18 c_r^-1/2 m² wie im Original; hard-sphere: σ = π d²; vhs: variable harte Kugel (d_ref, T_ref, ω); maxwell: σ c_r konstant.</translation>
+    </message>
+    <message>
+        <source>species A</source>
+        <translation>Sorte A</translation>
+    </message>
+    <message>
+        <source>species B</source>
+        <translation>Sorte B</translation>
+    </message>
+    <message>
+        <source>speed</source>
+        <translation>Geschwindigkeit</translation>
+    </message>
+    <message>
+        <source>speed [L/T]</source>
+        <translation>Geschwindigkeit [L/T]</translation>
+    </message>
+    <message>
+        <source>speed [m/s]</source>
+        <translation>Geschwindigkeit [m/s]</translation>
+    </message>
+    <message>
+        <source>two-beams: the seed&apos;s beams along x; maxwellian: one gas at rest; bkw: the BKW initial distribution (K₀ = 0.6).</source>
+        <translation>two-beams: die Strahlen des Originals in x-Richtung; maxwellian: ein ruhendes Gas; bkw: die BKW-Anfangsverteilung (K₀ = 0.6).</translation>
+    </message>
+    <message>
+        <source>v_x [m/s]</source>
+        <translation>v_x [m/s]</translation>
+    </message>
+    <message>
+        <source>v_y [m/s]</source>
+        <translation>v_y [m/s]</translation>
+    </message>
+    <message>
+        <source>value: ρ₀ = rest_density; spawn-lattice: ρ₀ is the density of a particle inside the spawn grid, so spawned fluid starts at rest.</source>
+        <translation>value: ρ₀ = rest_density; spawn-lattice: ρ₀ ist die Dichte eines Teilchens im Erzeugungsgitter, sodass erzeugte Flüssigkeit in Ruhe beginnt.</translation>
+    </message>
+    <message>
+        <source>x of the piston; moving it compresses or expands the gas.</source>
+        <translation>x-Position des Kolbens; ihn zu bewegen verdichtet oder entspannt das Gas.</translation>
+    </message>
+    <message>
+        <source>K</source>
+        <translation>K</translation>
+    </message>
+    <message>
+        <source>L</source>
+        <translation>L</translation>
+    </message>
+    <message>
+        <source>L/T</source>
+        <translation>L/T</translation>
+    </message>
+    <message>
+        <source>L/T²</source>
+        <translation>L/T²</translation>
+    </message>
+    <message>
+        <source>L/s</source>
+        <translation>L/s</translation>
+    </message>
+    <message>
+        <source>L/s²</source>
+        <translation>L/s²</translation>
+    </message>
+    <message>
+        <source>M</source>
+        <translation>M</translation>
+    </message>
+    <message>
+        <source>M/T²</source>
+        <translation>M/T²</translation>
+    </message>
+    <message>
+        <source>M·L²/T²</source>
+        <translation>M·L²/T²</translation>
+    </message>
+    <message>
+        <source>T</source>
+        <translation>T</translation>
+    </message>
+    <message>
+        <source>d</source>
+        <translation>d</translation>
+    </message>
+    <message>
+        <source>m</source>
+        <translation>m</translation>
+    </message>
+    <message>
+        <source>m/s</source>
+        <translation>m/s</translation>
+    </message>
+    <message>
+        <source>m³</source>
+        <translation>m³</translation>
+    </message>
+    <message>
+        <source>m³/s</source>
+        <translation>m³/s</translation>
+    </message>
+    <message>
+        <source>s</source>
+        <translation>s</translation>
+    </message>
+    <message>
+        <source>steps</source>
+        <translation>Schritte</translation>
+    </message>
+    <message>
+        <source>u</source>
+        <translation>u</translation>
+    </message>
+    <message>
+        <source>× rms speed</source>
+        <translation>× rms-Geschwindigkeit</translation>
+    </message>
+    <message>
+        <source>× √(g H)</source>
+        <translation>× √(g H)</translation>
+    </message>
+    <message>
+        <source>exploded</source>
+        <translation>explodiert</translation>
+    </message>
+    <message>
+        <source>inaccurate</source>
+        <translation>ungenau</translation>
+    </message>
+    <message>
+        <source>over-compressed</source>
+        <translation>überkomprimiert</translation>
+    </message>
+    <message>
+        <source>rejected</source>
+        <translation>abgelehnt</translation>
+    </message>
+    <message>
+        <source>stable</source>
+        <translation>stabil</translation>
+    </message>
+    <message>
+        <source>unstable</source>
+        <translation>instabil</translation>
+    </message>
+</context>
+<context>
+    <name>pl::ui</name>
+    <message>
+        <source>Energy</source>
+        <translation>Energie</translation>
+    </message>
+    <message>
+        <source>energy</source>
+        <translation>Energie</translation>
+    </message>
+    <message>
+        <source>kinetic</source>
+        <translation>kinetisch</translation>
+    </message>
+    <message>
+        <source>potential</source>
+        <translation>potentiell</translation>
+    </message>
+    <message>
+        <source>total</source>
+        <translation>gesamt</translation>
+    </message>
+    <message>
+        <source>|E − E₀| / E₀</source>
+        <translation>|E − E₀| / E₀</translation>
+    </message>
+    <message>
+        <source>relative drift</source>
+        <translation>relative Drift</translation>
+    </message>
+    <message>
+        <source>Thermodynamics</source>
+        <translation>Thermodynamik</translation>
+    </message>
+    <message>
+        <source>pressure</source>
+        <translation>Druck</translation>
+    </message>
+    <message>
+        <source>P from wall impulses</source>
+        <translation>P aus Wandimpulsen</translation>
+    </message>
+    <message>
+        <source>P from the virial</source>
+        <translation>P aus dem Virial</translation>
+    </message>
+    <message>
+        <source>N kT / A</source>
+        <translation>N kT / A</translation>
+    </message>
+    <message>
+        <source>kT</source>
+        <translation>kT</translation>
+    </message>
+    <message>
+        <source>kT of A</source>
+        <translation>kT von A</translation>
+    </message>
+    <message>
+        <source>kT of B</source>
+        <translation>kT von B</translation>
+    </message>
+    <message>
+        <source>Temperatures</source>
+        <translation>Temperaturen</translation>
+    </message>
+    <message>
+        <source>temperature [K]</source>
+        <translation>Temperatur [K]</translation>
+    </message>
+    <message>
+        <source>T_x</source>
+        <translation>T_x</translation>
+    </message>
+    <message>
+        <source>T_⊥</source>
+        <translation>T_⊥</translation>
+    </message>
+    <message>
+        <source>T</source>
+        <translation>T</translation>
+    </message>
+    <message>
+        <source>T_x − T_⊥ [K]</source>
+        <translation>T_x − T_⊥ [K]</translation>
+    </message>
+    <message>
+        <source>anisotropy</source>
+        <translation>Anisotropie</translation>
+    </message>
+    <message>
+        <source>Moments</source>
+        <translation>Momente</translation>
+    </message>
+    <message>
+        <source>M_2k / M_2k(eq)</source>
+        <translation>M_2k / M_2k(eq)</translation>
+    </message>
+    <message>
+        <source>M4</source>
+        <translation>M4</translation>
+    </message>
+    <message>
+        <source>M6</source>
+        <translation>M6</translation>
+    </message>
+    <message>
+        <source>M8</source>
+        <translation>M8</translation>
+    </message>
+    <message>
+        <source>M4 exact (BKW)</source>
+        <translation>M4 exakt (BKW)</translation>
+    </message>
+    <message>
+        <source>M6 exact (BKW)</source>
+        <translation>M6 exakt (BKW)</translation>
+    </message>
+    <message>
+        <source>M8 exact (BKW)</source>
+        <translation>M8 exakt (BKW)</translation>
+    </message>
+    <message>
+        <source>KL to Maxwellian</source>
+        <translation>KL zur Maxwell-Verteilung</translation>
+    </message>
+    <message>
+        <source>KL divergence [nats]</source>
+        <translation>KL-Divergenz [nats]</translation>
+    </message>
+    <message>
+        <source>Collisions</source>
+        <translation>Stöße</translation>
+    </message>
+    <message>
+        <source>pairs per step</source>
+        <translation>Paare pro Schritt</translation>
+    </message>
+    <message>
+        <source>candidates ng</source>
+        <translation>Kandidaten ng</translation>
+    </message>
+    <message>
+        <source>collisions nc</source>
+        <translation>Stöße nc</translation>
+    </message>
+    <message>
+        <source>(σ c_r)_max [m³/s]</source>
+        <translation>(σ c_r)_max [m³/s]</translation>
+    </message>
+    <message>
+        <source>(σ c_r)_max</source>
+        <translation>(σ c_r)_max</translation>
+    </message>
+    <message>
+        <source>Density error</source>
+        <translation>Dichtefehler</translation>
+    </message>
+    <message>
+        <source>iterations done in the last step</source>
+        <translation>Iterationen im letzten Schritt</translation>
+    </message>
+    <message>
+        <source>compression ρ/ρ₀ − 1</source>
+        <translation>Kompression ρ/ρ₀ − 1</translation>
+    </message>
+    <message>
+        <source>mean</source>
+        <translation>Mittel</translation>
+    </message>
+    <message>
+        <source>max</source>
+        <translation>Max.</translation>
+    </message>
+    <message>
+        <source>Dam-break front</source>
+        <translation>Dammbruchfront</translation>
+    </message>
+    <message>
+        <source>T = n t √(g/a)</source>
+        <translation>T = n t √(g/a)</translation>
+    </message>
+    <message>
+        <source>front Z = z / a</source>
+        <translation>Front Z = z / a</translation>
+    </message>
+    <message>
+        <source>surge front</source>
+        <translation>Flutfront</translation>
+    </message>
+    <message>
+        <source>shallow-water bound 1 + 2T</source>
+        <translation>Flachwasserschranke 1 + 2T</translation>
+    </message>
+    <message>
+        <source>Flow</source>
+        <translation>Strömung</translation>
+    </message>
+    <message>
+        <source>kinetic energy Σ ½ v²</source>
+        <translation>kinetische Energie Σ ½ v²</translation>
+    </message>
+    <message>
+        <source>neighbours within h</source>
+        <translation>Nachbarn innerhalb h</translation>
+    </message>
+    <message>
+        <source>min</source>
+        <translation>Min.</translation>
+    </message>
+</context>
+<context>
+    <name>pl::ui::Autosave</name>
+    <message>
+        <source>Cannot create %1</source>
+        <translation>%1 kann nicht angelegt werden</translation>
+    </message>
+    <message>
+        <source>Restore the last experiment?</source>
+        <translation>Letztes Experiment wiederherstellen?</translation>
+    </message>
+    <message>
+        <source>ParticleLab did not close normally. Its last experiment was saved %1. Restore it?</source>
+        <translation>ParticleLab wurde nicht normal beendet. Das letzte Experiment wurde am %1 gesichert. Wiederherstellen?</translation>
+    </message>
+    <message>
+        <source>Cannot restore the experiment</source>
+        <translation>Das Experiment kann nicht wiederhergestellt werden</translation>
+    </message>
+</context>
+<context>
+    <name>pl::ui::BenchmarkDialog</name>
+    <message>
+        <source>Benchmark this machine</source>
+        <translation>Diesen Rechner vermessen</translation>
+    </message>
+    <message>
+        <source>particles N</source>
+        <translation>Teilchen N</translation>
+    </message>
+    <message>
+        <source>particle-steps per second</source>
+        <translation>Teilchenschritte pro Sekunde</translation>
+    </message>
+    <message>
+        <source>Times the gas and the fluid at growing N on the CPU and, where OpenGL 4.3 is available, on the GPU. Right-click the plot to export it.</source>
+        <translation>Misst Gas und Flüssigkeit bei wachsendem N auf der CPU und, wo OpenGL 4.3 verfügbar ist, auf der GPU. Rechtsklick auf das Diagramm exportiert es.</translation>
+    </message>
+    <message>
+        <source>Start</source>
+        <translation>Start</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>Stopp</translation>
+    </message>
+    <message>
+        <source>Export…</source>
+        <translation>Exportieren…</translation>
+    </message>
+    <message>
+        <source>Stopped after %1 of %2 measurements.</source>
+        <translation>Angehalten nach %1 von %2 Messungen.</translation>
+    </message>
+    <message>
+        <source>Done: %1 measurements. Right-click the plot to save it or its data.</source>
+        <translation>Fertig: %1 Messungen. Rechtsklick auf das Diagramm speichert es oder seine Daten.</translation>
+    </message>
+    <message>
+        <source>Timing the %1 with %2 particles on the %3…</source>
+        <translation>Zeitmessung: %1 mit %2 Teilchen auf der %3…</translation>
+    </message>
+    <message>
+        <source>GPU</source>
+        <translation>GPU</translation>
+    </message>
+    <message>
+        <source>CPU</source>
+        <translation>CPU</translation>
+    </message>
+    <message>
+        <source>%1 failed: %2</source>
+        <translation>%1 fehlgeschlagen: %2</translation>
+    </message>
+    <message>
+        <source>gas</source>
+        <translation>Gas</translation>
+    </message>
+    <message>
+        <source>fluid</source>
+        <translation>Flüssigkeit</translation>
+    </message>
+</context>
+<context>
+    <name>pl::ui::DistributionPlot</name>
+    <message>
+        <source>Average over</source>
+        <translation>Mitteln über</translation>
+    </message>
+    <message>
+        <source> samples</source>
+        <translation> Stichproben</translation>
+    </message>
+    <message>
+        <source>Time-averages the bars over the last samples (about 20 per second of running)</source>
+        <translation>Mittelt die Balken zeitlich über die letzten Stichproben (etwa 20 pro Sekunde Laufzeit)</translation>
+    </message>
+    <message>
+        <source>probability density</source>
+        <translation>Wahrscheinlichkeitsdichte</translation>
+    </message>
+    <message>
+        <source>measured</source>
+        <translation>gemessen</translation>
+    </message>
+    <message>
+        <source>Maxwell–Boltzmann</source>
+        <translation>Maxwell–Boltzmann</translation>
+    </message>
+    <message>
+        <source>%1 (theory)</source>
+        <translation>%1 (Theorie)</translation>
+    </message>
+</context>
+<context>
+    <name>pl::ui::DsmcPage</name>
+    <message>
+        <source>Maxwell molecules relaxing from the BKW start for 6 mean collision times, at each number of particles in the cell and collision probability ν dt per step. The error is the rms distance of the 4th and 6th moments from the exact BKW curves. In one homogeneous cell the noise of N particles (∝ 1/√N) outweighs the time step, and the cost is the number of collisions.</source>
+        <translation>Maxwell-Moleküle relaxieren vom BKW-Start aus über 6 mittlere Stoßzeiten, für jede Teilchenzahl in der Zelle und jede Stoßwahrscheinlichkeit ν dt pro Schritt. Der Fehler ist der quadratisch gemittelte Abstand des 4. und 6. Moments von den exakten BKW-Kurven. In einer homogenen Zelle überwiegt das Rauschen von N Teilchen (∝ 1/√N) den Zeitschritt, und die Kosten sind die Zahl der Stöße.</translation>
+    </message>
+    <message>
+        <source>wall time of the run [s]</source>
+        <translation>Rechenzeit des Laufs [s]</translation>
+    </message>
+    <message>
+        <source>rms moment error</source>
+        <translation>rms-Fehler der Momente</translation>
+    </message>
+    <message>
+        <source>moment error</source>
+        <translation>Momentenfehler</translation>
+    </message>
+    <message>
+        <source>s per run</source>
+        <translation>s pro Lauf</translation>
+    </message>
+    <message>
+        <source>ν dt = %1</source>
+        <translation>ν dt = %1</translation>
+    </message>
+    <message>
+        <source>ν dt = %1: error %2 at %3 particles, %4 at %5</source>
+        <translation>ν dt = %1: Fehler %2 bei %3 Teilchen, %4 bei %5</translation>
+    </message>
+    <message>
+        <source>DSMC sweep</source>
+        <translation>DSMC-Parameterstudie</translation>
+    </message>
+    <message>
+        <source>load a DSMC experiment to apply</source>
+        <translation>zum Übernehmen ein DSMC-Experiment laden</translation>
+    </message>
+    <message>
+        <source>measured for Maxwell molecules: the current cell uses %1</source>
+        <translation>für Maxwell-Moleküle gemessen: die aktuelle Zelle verwendet %1</translation>
+    </message>
+    <message>
+        <source>the sweep counts one population of particles; the current cell has two beams</source>
+        <translation>die Parameterstudie zählt eine Teilchenpopulation; die aktuelle Zelle hat zwei Strahlen</translation>
+    </message>
+    <message>
+        <source>no DSMC experiment is open</source>
+        <translation>kein DSMC-Experiment geöffnet</translation>
+    </message>
+</context>
+<context>
+    <name>pl::ui::EchoPage</name>
+    <message>
+        <source>64 disks in a periodic box run n steps forward, reverse and run n steps back. Chaos amplifies round-off exponentially; bit-reversible integers return exactly.</source>
+        <translation>64 Scheiben in einem periodischen Behälter laufen n Schritte vorwärts, kehren um und laufen n Schritte zurück. Chaos verstärkt Rundungsfehler exponentiell; bitgenau umkehrbare Ganzzahlen kehren exakt zurück.</translation>
+    </message>
+    <message>
+        <source>steps out and back, n</source>
+        <translation>Schritte hin und zurück, n</translation>
+    </message>
+    <message>
+        <source>rms return error [L]</source>
+        <translation>rms-Rückkehrfehler [L]</translation>
+    </message>
+    <message>
+        <source>double</source>
+        <translation>double</translation>
+    </message>
+    <message>
+        <source>float</source>
+        <translation>float</translation>
+    </message>
+    <message>
+        <source>n = %1: double %2, float %3, integers %4</source>
+        <translation>n = %1: double %2, float %3, Ganzzahlen %4</translation>
+    </message>
+    <message>
+        <source>exactly 0</source>
+        <translation>exakt 0</translation>
+    </message>
+    <message>
+        <source>Loschmidt echo</source>
+        <translation>Loschmidt-Echo</translation>
+    </message>
+</context>
+<context>
+    <name>pl::ui::ExperimentDocument</name>
+    <message>
+        <source>Cannot open preset</source>
+        <translation>Vorlage kann nicht geöffnet werden</translation>
+    </message>
+    <message>
+        <source>Cannot create experiment</source>
+        <translation>Experiment kann nicht erstellt werden</translation>
+    </message>
+    <message>
+        <source>Unknown scene &apos;%1&apos;.</source>
+        <translation>Unbekannte Szene „%1“.</translation>
+    </message>
+    <message>
+        <source>untitled</source>
+        <translation>unbenannt</translation>
+    </message>
+    <message>
+        <source>Save preset</source>
+        <translation>Vorlage speichern</translation>
+    </message>
+    <message>
+        <source>Presets (*.json)</source>
+        <translation>Vorlagen (*.json)</translation>
+    </message>
+    <message>
+        <source>Cannot save preset</source>
+        <translation>Vorlage kann nicht gespeichert werden</translation>
+    </message>
+    <message>
+        <source>Unsaved changes</source>
+        <translation>Ungespeicherte Änderungen</translation>
+    </message>
+    <message>
+        <source>The experiment &apos;%1&apos; has changes. Save them as a preset?</source>
+        <translation>Das Experiment „%1“ wurde geändert. Änderungen als Vorlage speichern?</translation>
+    </message>
+    <message>
+        <source>restored</source>
+        <translation>wiederhergestellt</translation>
+    </message>
+    <message>
+        <source>Cannot save snapshot</source>
+        <translation>Momentaufnahme kann nicht gespeichert werden</translation>
+    </message>
+</context>
+<context>
+    <name>pl::ui::ExportImageDialog</name>
+    <message>
+        <source>Image size</source>
+        <translation>Bildgröße</translation>
+    </message>
+    <message>
+        <source> px</source>
+        <translation> px</translation>
+    </message>
+    <message>
+        <source> DPI</source>
+        <translation> DPI</translation>
+    </message>
+    <message>
+        <source>PNG pixels = size × DPI / 96</source>
+        <translation>PNG-Pixel = Größe × DPI / 96</translation>
+    </message>
+    <message>
+        <source>Resolution recorded in the file</source>
+        <translation>In der Datei vermerkte Auflösung</translation>
+    </message>
+    <message>
+        <source>Width</source>
+        <translation>Breite</translation>
+    </message>
+    <message>
+        <source>Height</source>
+        <translation>Höhe</translation>
+    </message>
+    <message>
+        <source>Resolution</source>
+        <translation>Auflösung</translation>
+    </message>
+</context>
+<context>
+    <name>pl::ui::FluidPage</name>
+    <message>
+        <source>A 5 × 10 dam break (about 300 particles) for 1 s of simulated time at each dt and number of solver iterations. Over-compressed: the mean density error stayed above 1 %. Exploded: the solver diverged, or after half the run the fluid still held more kinetic energy than the fall through the box can release. Right: the density error against what it cost.</source>
+        <translation>Ein 5 × 10-Dammbruch (etwa 300 Teilchen) über 1 s simulierte Zeit für jedes dt und jede Zahl von Löser-Iterationen. Überkomprimiert: Der mittlere Dichtefehler blieb über 1 %. Explodiert: Der Löser divergierte, oder nach der halben Laufzeit hatte die Flüssigkeit noch mehr kinetische Energie, als der Fall durch den Behälter freisetzen kann. Rechts: der Dichtefehler gegen seine Kosten.</translation>
+    </message>
+    <message>
+        <source>time step dt [s]</source>
+        <translation>Zeitschritt dt [s]</translation>
+    </message>
+    <message>
+        <source>solver iterations</source>
+        <translation>Löser-Iterationen</translation>
+    </message>
+    <message>
+        <source>wall time per simulated second [s]</source>
+        <translation>Rechenzeit pro simulierter Sekunde [s]</translation>
+    </message>
+    <message>
+        <source>mean density error</source>
+        <translation>mittlerer Dichtefehler</translation>
+    </message>
+    <message>
+        <source>max density error</source>
+        <translation>größter Dichtefehler</translation>
+    </message>
+    <message>
+        <source>Error:</source>
+        <translation>Fehler:</translation>
+    </message>
+    <message>
+        <source>density error</source>
+        <translation>Dichtefehler</translation>
+    </message>
+    <message>
+        <source>no experiment is open</source>
+        <translation>kein Experiment geöffnet</translation>
+    </message>
+    <message>
+        <source>load a fluid experiment to apply</source>
+        <translation>zum Übernehmen ein Flüssigkeitsexperiment laden</translation>
+    </message>
+    <message>
+        <source>current fluid</source>
+        <translation>aktuelle Flüssigkeit</translation>
+    </message>
+    <message>
+        <source>dt = %1: %2 of %3 settings ran through</source>
+        <translation>dt = %1: %2 von %3 Einstellungen liefen durch</translation>
+    </message>
+    <message>
+        <source>Fluid sweep</source>
+        <translation>Flüssigkeits-Parameterstudie</translation>
+    </message>
+    <message>
+        <source>dt = %1</source>
+        <translation>dt = %1</translation>
+    </message>
+</context>
+<context>
+    <name>pl::ui::GasSweepPage</name>
+    <message>
+        <source>Each integrator over a range of dt for the same simulated time. The harmonic pair (two disks pressed together and released) has an exact solution; the current gas is compared with a Forest–Ruth run at 1/16 of its step over 64 of its steps. Lower and further left is better; the legend gives each scheme&apos;s measured order.</source>
+        <translation>Jeder Integrator über einen Bereich von dt für dieselbe simulierte Zeit. Das harmonische Paar (zwei zusammengedrückte und losgelassene Scheiben) hat eine exakte Lösung; das aktuelle Gas wird mit einem Forest–Ruth-Lauf mit 1/16 seines Schritts über 64 seiner Schritte verglichen. Weiter unten und weiter links ist besser; die Legende nennt die gemessene Ordnung jedes Verfahrens.</translation>
+    </message>
+    <message>
+        <source>Harmonic pair (exact)</source>
+        <translation>Harmonisches Paar (exakt)</translation>
+    </message>
+    <message>
+        <source>Current gas (reference run)</source>
+        <translation>Aktuelles Gas (Referenzlauf)</translation>
+    </message>
+    <message>
+        <source>position error</source>
+        <translation>Ortsfehler</translation>
+    </message>
+    <message>
+        <source>energy error</source>
+        <translation>Energiefehler</translation>
+    </message>
+    <message>
+        <source>force evaluations per unit time</source>
+        <translation>Kraftauswertungen pro Zeiteinheit</translation>
+    </message>
+    <message>
+        <source>wall time per unit time</source>
+        <translation>Rechenzeit pro Zeiteinheit</translation>
+    </message>
+    <message>
+        <source>Start from:</source>
+        <translation>Ausgehend von:</translation>
+    </message>
+    <message>
+        <source>Error:</source>
+        <translation>Fehler:</translation>
+    </message>
+    <message>
+        <source>Cost:</source>
+        <translation>Kosten:</translation>
+    </message>
+    <message>
+        <source>error</source>
+        <translation>Fehler</translation>
+    </message>
+    <message>
+        <source>no experiment is open</source>
+        <translation>kein Experiment geöffnet</translation>
+    </message>
+    <message>
+        <source>the pair&apos;s dt belongs to its own stiffness: sweep the current gas to apply</source>
+        <translation>das dt des Paares gehört zu seiner eigenen Steifigkeit: zum Übernehmen das aktuelle Gas untersuchen</translation>
+    </message>
+    <message>
+        <source>load a gas experiment to apply</source>
+        <translation>zum Übernehmen ein Gasexperiment laden</translation>
+    </message>
+    <message>
+        <source>Load a gas experiment with disks first, or sweep the harmonic pair.</source>
+        <translation>Zuerst ein Gasexperiment mit Scheiben laden oder das harmonische Paar untersuchen.</translation>
+    </message>
+    <message>
+        <source>Reference run done; sweeping the integrators…</source>
+        <translation>Referenzlauf fertig; die Integratoren werden untersucht…</translation>
+    </message>
+    <message>
+        <source>%1: measured order %2 (theory %3)%4</source>
+        <translation>%1: gemessene Ordnung %2 (Theorie %3)%4</translation>
+    </message>
+    <message>
+        <source>; %1 dt blew up and is not drawn</source>
+        <translation>; %1 dt ist explodiert und wird nicht gezeichnet</translation>
+    </message>
+    <message>
+        <source>Integrator sweep</source>
+        <translation>Integrator-Parameterstudie</translation>
+    </message>
+    <message>
+        <source>%1 (order %2, theory %3)</source>
+        <translation>%1 (Ordnung %2, Theorie %3)</translation>
+    </message>
+    <message>
+        <source>current setting</source>
+        <translation>aktuelle Einstellung</translation>
+    </message>
+</context>
+<context>
+    <name>pl::ui::LabPage</name>
+    <message>
+        <source>Run</source>
+        <translation>Ausführen</translation>
+    </message>
+</context>
+<context>
+    <name>pl::ui::LabRunner</name>
+    <message>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <source>%1: running…</source>
+        <translation>%1: läuft…</translation>
+    </message>
+    <message>
+        <source>A point failed: %1</source>
+        <translation>Ein Punkt ist fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <source>an unknown error</source>
+        <translation>ein unbekannter Fehler</translation>
+    </message>
+    <message>
+        <source>A point failed with an unknown error.</source>
+        <translation>Ein Punkt ist mit einem unbekannten Fehler fehlgeschlagen.</translation>
+    </message>
+    <message>
+        <source>Cancelling after the current point…</source>
+        <translation>Abbruch nach dem aktuellen Punkt…</translation>
+    </message>
+    <message>
+        <source>%1: cancelled after %2 of %3 points.</source>
+        <translation>%1: abgebrochen nach %2 von %3 Punkten.</translation>
+    </message>
+    <message>
+        <source>%1: done; %2 of %3 points failed, the last with: %4</source>
+        <translation>%1: fertig; %2 von %3 Punkten fehlgeschlagen, der letzte mit: %4</translation>
+    </message>
+</context>
+<context>
+    <name>pl::ui::Language</name>
+    <message>
+        <source>System default</source>
+        <translation>Systemvorgabe</translation>
+    </message>
+</context>
+<context>
+    <name>pl::ui::LessonControls</name>
+    <message>
+        <source>Run</source>
+        <translation>Start</translation>
+    </message>
+    <message>
+        <source>Reset</source>
+        <translation>Zurücksetzen</translation>
+    </message>
+    <message>
+        <source>Volume</source>
+        <translation>Volumen</translation>
+    </message>
+    <message>
+        <source>Piston</source>
+        <translation>Kolben</translation>
+    </message>
+    <message>
+        <source>Replace the right wall by a piston</source>
+        <translation>Die rechte Wand durch einen Kolben ersetzen</translation>
+    </message>
+    <message>
+        <source>◀ Compress</source>
+        <translation>◀ Verdichten</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>Stopp</translation>
+    </message>
+    <message>
+        <source>Expand ▶</source>
+        <translation>Entspannen ▶</translation>
+    </message>
+    <message>
+        <source>Gravity</source>
+        <translation>Schwerkraft</translation>
+    </message>
+    <message>
+        <source>Gravity on</source>
+        <translation>Schwerkraft an</translation>
+    </message>
+    <message>
+        <source>Pour (hold)</source>
+        <translation>Eingießen (halten)</translation>
+    </message>
+    <message>
+        <source>Drag a rectangle in the tank to fill it with fluid; a click adds a drop.</source>
+        <translation>Ein Rechteck im Becken aufziehen, um es mit Flüssigkeit zu füllen; ein Klick fügt einen Tropfen hinzu.</translation>
+    </message>
+    <message>
+        <source>Steps per frame</source>
+        <translation>Schritte pro Bild</translation>
+    </message>
+    <message>
+        <source>Restarted with %1 particles at kT = %2.</source>
+        <translation>Neu gestartet mit %1 Teilchen bei kT = %2.</translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation>Pause</translation>
+    </message>
+    <message>
+        <source>◀ Cool   Heat ▶</source>
+        <translation>◀ Kühlen   Heizen ▶</translation>
+    </message>
+    <message>
+        <source>Particles (restart at this kT)</source>
+        <translation>Teilchen (Neustart bei diesem kT)</translation>
+    </message>
+    <message>
+        <source>Spawn tool</source>
+        <translation>Werkzeug „Erzeugen“</translation>
+    </message>
+    <message>
+        <source>Pour where you like: drag a rectangle in the tank to fill it with fluid</source>
+        <translation>Gießen, wo Sie möchten: ein Rechteck im Becken aufziehen, um es mit Flüssigkeit zu füllen</translation>
+    </message>
+</context>
+<context>
+    <name>pl::ui::MainWindow</name>
+    <message>
+        <source>ParticleLab</source>
+        <translation>ParticleLab</translation>
+    </message>
+    <message>
+        <source>The simulation stopped</source>
+        <translation>Die Simulation wurde angehalten</translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation>Pause</translation>
+    </message>
+    <message>
+        <source>Play</source>
+        <translation>Start</translation>
+    </message>
+    <message>
+        <source>Parameters</source>
+        <translation>Parameter</translation>
+    </message>
+    <message>
+        <source>Speed distribution</source>
+        <translation>Geschwindigkeitsverteilung</translation>
+    </message>
+    <message>
+        <source>v_x distribution</source>
+        <translation>v_x-Verteilung</translation>
+    </message>
+    <message>
+        <source>Methods lab</source>
+        <translation>Methodenlabor</translation>
+    </message>
+    <message>
+        <source>%1[*] — ParticleLab</source>
+        <translation>%1[*] — ParticleLab</translation>
+    </message>
+    <message>
+        <source>Cannot write %1: %2</source>
+        <translation>%1 kann nicht geschrieben werden: %2</translation>
+    </message>
+    <message>
+        <source>%1 particles   t = %2   step %3   %4 steps/s   %5 fps   %6</source>
+        <translation>%1 Teilchen   t = %2   Schritt %3   %4 Schritte/s   %5 Bilder/s   %6</translation>
+    </message>
+    <message>
+        <source>GPU</source>
+        <translation>GPU</translation>
+    </message>
+    <message>
+        <source>CPU</source>
+        <translation>CPU</translation>
+    </message>
+    <message>
+        <source>&amp;File</source>
+        <translation>&amp;Datei</translation>
+    </message>
+    <message>
+        <source>&amp;New experiment</source>
+        <translation>&amp;Neues Experiment</translation>
+    </message>
+    <message>
+        <source>&amp;Open preset…</source>
+        <translation>Vorlage ö&amp;ffnen…</translation>
+    </message>
+    <message>
+        <source>Open a preset file</source>
+        <translation>Eine Vorlagendatei öffnen</translation>
+    </message>
+    <message>
+        <source>Open preset</source>
+        <translation>Vorlage öffnen</translation>
+    </message>
+    <message>
+        <source>Open &amp;recent</source>
+        <translation>&amp;Zuletzt geöffnet</translation>
+    </message>
+    <message>
+        <source>&amp;Save preset</source>
+        <translation>Vorlage &amp;speichern</translation>
+    </message>
+    <message>
+        <source>Save the experiment as a preset</source>
+        <translation>Das Experiment als Vorlage speichern</translation>
+    </message>
+    <message>
+        <source>Save preset &amp;as…</source>
+        <translation>Vorlage speichern &amp;unter…</translation>
+    </message>
+    <message>
+        <source>Save the experiment under a new name</source>
+        <translation>Das Experiment unter neuem Namen speichern</translation>
+    </message>
+    <message>
+        <source>Save viewport &amp;image…</source>
+        <translation>Ansicht als B&amp;ild speichern…</translation>
+    </message>
+    <message>
+        <source>Save what the viewport shows as a PNG</source>
+        <translation>Den Inhalt der Simulationsansicht als PNG speichern</translation>
+    </message>
+    <message>
+        <source>Save viewport image</source>
+        <translation>Bild der Ansicht speichern</translation>
+    </message>
+    <message>
+        <source>PNG image (*.png)</source>
+        <translation>PNG-Bild (*.png)</translation>
+    </message>
+    <message>
+        <source>Cannot save the image</source>
+        <translation>Das Bild kann nicht gespeichert werden</translation>
+    </message>
+    <message>
+        <source>&amp;Quit</source>
+        <translation>&amp;Beenden</translation>
+    </message>
+    <message>
+        <source>Close ParticleLab</source>
+        <translation>ParticleLab schließen</translation>
+    </message>
+    <message>
+        <source>&amp;Simulation</source>
+        <translation>&amp;Simulation</translation>
+    </message>
+    <message>
+        <source>Simulation</source>
+        <translation>Simulation</translation>
+    </message>
+    <message>
+        <source>Run or pause the simulation</source>
+        <translation>Die Simulation starten oder anhalten</translation>
+    </message>
+    <message>
+        <source>Step</source>
+        <translation>Schritt</translation>
+    </message>
+    <message>
+        <source>Advance one time step</source>
+        <translation>Einen Zeitschritt weiter</translation>
+    </message>
+    <message>
+        <source>Reset</source>
+        <translation>Zurücksetzen</translation>
+    </message>
+    <message>
+        <source>Restart from the initial state with the current parameters</source>
+        <translation>Mit den aktuellen Parametern vom Anfangszustand neu beginnen</translation>
+    </message>
+    <message>
+        <source> Steps per frame </source>
+        <translation> Schritte pro Bild </translation>
+    </message>
+    <message>
+        <source>Signed speed: negative values run time backwards, 0 pauses ([ slower, ] faster)</source>
+        <translation>Geschwindigkeit mit Vorzeichen: negative Werte lassen die Zeit rückwärts laufen, 0 hält an ([ langsamer, ] schneller)</translation>
+    </message>
+    <message>
+        <source>Slower</source>
+        <translation>Langsamer</translation>
+    </message>
+    <message>
+        <source>One step per frame less</source>
+        <translation>Ein Schritt pro Bild weniger</translation>
+    </message>
+    <message>
+        <source>Faster</source>
+        <translation>Schneller</translation>
+    </message>
+    <message>
+        <source>One step per frame more</source>
+        <translation>Ein Schritt pro Bild mehr</translation>
+    </message>
+    <message>
+        <source>Reverse time</source>
+        <translation>Zeit umkehren</translation>
+    </message>
+    <message>
+        <source>Run time the other way</source>
+        <translation>Die Zeit in die andere Richtung laufen lassen</translation>
+    </message>
+    <message>
+        <source>Compute &amp;backend</source>
+        <translation>Rechen-&amp;Backend</translation>
+    </message>
+    <message>
+        <source>&amp;Automatic</source>
+        <translation>&amp;Automatisch</translation>
+    </message>
+    <message>
+        <source>The GPU for scenes large enough to gain from it, else the CPU</source>
+        <translation>Die GPU für Szenen, die groß genug sind, um davon zu profitieren, sonst die CPU</translation>
+    </message>
+    <message>
+        <source>&amp;CPU</source>
+        <translation>&amp;CPU</translation>
+    </message>
+    <message>
+        <source>The OpenMP reference models</source>
+        <translation>Die OpenMP-Referenzmodelle</translation>
+    </message>
+    <message>
+        <source>&amp;GPU (OpenGL compute)</source>
+        <translation>&amp;GPU (OpenGL-Compute)</translation>
+    </message>
+    <message>
+        <source>OpenGL 4.3 compute shaders; the CPU where none exist</source>
+        <translation>OpenGL-4.3-Compute-Shader; die CPU, wo es keine gibt</translation>
+    </message>
+    <message>
+        <source>Benchmark this &amp;machine…</source>
+        <translation>Diesen &amp;Rechner vermessen…</translation>
+    </message>
+    <message>
+        <source>Time the gas and the fluid at growing N on the CPU and the GPU</source>
+        <translation>Gas und Flüssigkeit bei wachsendem N auf CPU und GPU messen</translation>
+    </message>
+    <message>
+        <source>&amp;View</source>
+        <translation>&amp;Ansicht</translation>
+    </message>
+    <message>
+        <source>Zoom to &amp;fit</source>
+        <translation>&amp;Einpassen</translation>
+    </message>
+    <message>
+        <source>Show the whole scene (the wheel zooms, the middle button pans)</source>
+        <translation>Die ganze Szene zeigen (das Mausrad zoomt, die mittlere Taste verschiebt)</translation>
+    </message>
+    <message>
+        <source>&amp;Projector mode</source>
+        <translation>&amp;Projektormodus</translation>
+    </message>
+    <message>
+        <source>Large fonts and thick lines for a classroom projector</source>
+        <translation>Große Schrift und dicke Linien für einen Projektor im Klassenraum</translation>
+    </message>
+    <message>
+        <source>Experiment</source>
+        <translation>Experiment</translation>
+    </message>
+    <message>
+        <source> Scene </source>
+        <translation> Szene </translation>
+    </message>
+    <message>
+        <source>The kind of simulation: choosing one opens its first built-in experiment</source>
+        <translation>Die Art der Simulation: Die Auswahl öffnet ihr erstes eingebautes Experiment</translation>
+    </message>
+    <message>
+        <source> Preset </source>
+        <translation> Vorlage </translation>
+    </message>
+    <message>
+        <source>Built-in experiments and your saved presets</source>
+        <translation>Eingebaute Experimente und Ihre gespeicherten Vorlagen</translation>
+    </message>
+    <message>
+        <source>Tools</source>
+        <translation>Werkzeuge</translation>
+    </message>
+    <message>
+        <source>&amp;Tools</source>
+        <translation>&amp;Werkzeuge</translation>
+    </message>
+    <message>
+        <source>Drag</source>
+        <translation>Ziehen</translation>
+    </message>
+    <message>
+        <source>Spawn</source>
+        <translation>Erzeugen</translation>
+    </message>
+    <message>
+        <source>Drag a rectangle to fill it with particles, or click for one</source>
+        <translation>Ein Rechteck aufziehen, um es mit Teilchen zu füllen, oder für eines klicken</translation>
+    </message>
+    <message>
+        <source>Add disc</source>
+        <translation>Scheibe hinzufügen</translation>
+    </message>
+    <message>
+        <source>Click to place a disc obstacle</source>
+        <translation>Klicken, um ein scheibenförmiges Hindernis zu setzen</translation>
+    </message>
+    <message>
+        <source>Add box</source>
+        <translation>Kasten hinzufügen</translation>
+    </message>
+    <message>
+        <source>Drag a rectangle to place a box obstacle</source>
+        <translation>Ein Rechteck aufziehen, um ein kastenförmiges Hindernis zu setzen</translation>
+    </message>
+    <message>
+        <source>Remove</source>
+        <translation>Entfernen</translation>
+    </message>
+    <message>
+        <source>Click an obstacle to remove it</source>
+        <translation>Ein Hindernis anklicken, um es zu entfernen</translation>
+    </message>
+    <message>
+        <source>Piston</source>
+        <translation>Kolben</translation>
+    </message>
+    <message>
+        <source>Drag to move the piston (when enabled in Parameters)</source>
+        <translation>Ziehen, um den Kolben zu bewegen (wenn in den Parametern eingeschaltet)</translation>
+    </message>
+    <message>
+        <source>Gravity</source>
+        <translation>Schwerkraft</translation>
+    </message>
+    <message>
+        <source>Switch gravity on or off</source>
+        <translation>Schwerkraft ein- oder ausschalten</translation>
+    </message>
+    <message>
+        <source> Cool </source>
+        <translation> Kühlen </translation>
+    </message>
+    <message>
+        <source>Hold to the right to heat, to the left to cool; it springs back when released</source>
+        <translation>Nach rechts halten heizt, nach links kühlt; beim Loslassen springt der Regler zurück</translation>
+    </message>
+    <message>
+        <source> Heat </source>
+        <translation> Heizen </translation>
+    </message>
+    <message>
+        <source>Heat</source>
+        <translation>Heizen</translation>
+    </message>
+    <message>
+        <source>Raise the kinetic energy by 10 %</source>
+        <translation>Die kinetische Energie um 10 % erhöhen</translation>
+    </message>
+    <message>
+        <source>Cool</source>
+        <translation>Kühlen</translation>
+    </message>
+    <message>
+        <source>Lower the kinetic energy by 10 %</source>
+        <translation>Die kinetische Energie um 10 % senken</translation>
+    </message>
+    <message>
+        <source>%1 (mine)</source>
+        <translation>%1 (eigene)</translation>
+    </message>
+    <message>
+        <source>Pr&amp;eferences…</source>
+        <translation>&amp;Einstellungen…</translation>
+    </message>
+    <message>
+        <source>Choose the language of ParticleLab</source>
+        <translation>Die Sprache von ParticleLab wählen</translation>
+    </message>
+    <message>
+        <source>P&amp;resent</source>
+        <translation>Prä&amp;sentation</translation>
+    </message>
+    <message>
+        <source>Full screen: the viewport, one plot, big readouts and a lesson&apos;s controls (Escape leaves)</source>
+        <translation>Vollbild: die Simulationsansicht, ein Diagramm, große Anzeigen und die Bedienelemente einer Unterrichtsstunde (Esc beendet)</translation>
+    </message>
+    <message>
+        <source>Drag obstacles and the piston; drag empty space to pan (in the fluid: to pour)</source>
+        <translation>Hindernisse und den Kolben ziehen; freie Fläche ziehen verschiebt die Ansicht (in der Flüssigkeit: gießt ein)</translation>
+    </message>
+    <message>
+        <source>This experiment has no piston: tick “Piston” in Parameters → Walls and fields.</source>
+        <translation>Dieses Experiment hat keinen Kolben: „Kolben“ unter Parameter → Wände und Felder ankreuzen.</translation>
+    </message>
+    <message>
+        <source>The piston moves while time runs (Space).</source>
+        <translation>Der Kolben bewegt sich, während die Zeit läuft (Leertaste).</translation>
+    </message>
+    <message>
+        <source>Compress</source>
+        <translation>Verdichten</translation>
+    </message>
+    <message>
+        <source>Move the piston left at the piston speed; again to hold it</source>
+        <translation>Den Kolben mit der Kolbengeschwindigkeit nach links bewegen; erneut, um ihn anzuhalten</translation>
+    </message>
+    <message>
+        <source>Expand</source>
+        <translation>Entspannen</translation>
+    </message>
+    <message>
+        <source>Move the piston right at the piston speed; again to hold it</source>
+        <translation>Den Kolben mit der Kolbengeschwindigkeit nach rechts bewegen; erneut, um ihn anzuhalten</translation>
+    </message>
+    <message>
+        <source>Presets and snapshots (*.json)</source>
+        <translation>Vorlagen und Momentaufnahmen (*.json)</translation>
+    </message>
+    <message>
+        <source>Save sna&amp;pshot…</source>
+        <translation>&amp;Momentaufnahme speichern…</translation>
+    </message>
+    <message>
+        <source>Save the experiment with every particle, to continue exactly where it is</source>
+        <translation>Das Experiment mit jedem Teilchen speichern, um genau an dieser Stelle weiterzumachen</translation>
+    </message>
+    <message>
+        <source>Save snapshot</source>
+        <translation>Momentaufnahme speichern</translation>
+    </message>
+    <message>
+        <source>Snapshots (*.json)</source>
+        <translation>Momentaufnahmen (*.json)</translation>
+    </message>
+    <message>
+        <source>%1, read-only: %2 particles, %3 rows up to t = %4, step %5. Open a preset to simulate again.</source>
+        <translation>%1, schreibgeschützt: %2 Teilchen, %3 Zeilen bis t = %4, Schritt %5. Zum erneuten Simulieren eine Vorlage öffnen.</translation>
+    </message>
+    <message>
+        <source>Export to &amp;LAMMPS…</source>
+        <translation>Nach LAMMPS e&amp;xportieren…</translation>
+    </message>
+    <message>
+        <source>Write the gas in its current state as a LAMMPS deck into a folder</source>
+        <translation>Das Gas im aktuellen Zustand als LAMMPS-Eingabe in einen Ordner schreiben</translation>
+    </message>
+    <message>
+        <source>Export to LAMMPS: choose a folder</source>
+        <translation>Nach LAMMPS exportieren: einen Ordner wählen</translation>
+    </message>
+    <message>
+        <source>Cannot export to LAMMPS</source>
+        <translation>Export nach LAMMPS nicht möglich</translation>
+    </message>
+    <message>
+        <source>Open LAMMPS r&amp;un…</source>
+        <translation>&amp;LAMMPS-Lauf öffnen…</translation>
+    </message>
+    <message>
+        <source>Show a LAMMPS run of an exported deck (log.lammps and its dump) read-only</source>
+        <translation>Einen LAMMPS-Lauf einer exportierten Eingabe (log.lammps und sein Dump) schreibgeschützt anzeigen</translation>
+    </message>
+    <message>
+        <source>Open LAMMPS run: choose the deck&apos;s folder after LAMMPS ran in it</source>
+        <translation>LAMMPS-Lauf öffnen: den Ordner der Eingabe wählen, nachdem LAMMPS darin gelaufen ist</translation>
+    </message>
+    <message>
+        <source>Cannot open the LAMMPS run</source>
+        <translation>Der LAMMPS-Lauf kann nicht geöffnet werden</translation>
+    </message>
+    <message>
+        <source>No experiment is loaded.</source>
+        <translation>Kein Experiment geladen.</translation>
+    </message>
+    <message>
+        <source>Wrote the LAMMPS deck to %1; run it there with: %2</source>
+        <translation>LAMMPS-Eingabe nach %1 geschrieben; dort ausführen mit: %2</translation>
+    </message>
+    <message>
+        <source>LAMMPS run in %1</source>
+        <translation>LAMMPS-Lauf in %1</translation>
+    </message>
+    <message>
+        <source>LAMMPS run %1</source>
+        <translation>LAMMPS-Lauf %1</translation>
+    </message>
+    <message>
+        <source>Run on &amp;LAMMPS…</source>
+        <translation>Mit &amp;LAMMPS rechnen…</translation>
+    </message>
+    <message>
+        <source>Export the gas, run it with mpirun and LAMMPS, and open the run</source>
+        <translation>Das Gas exportieren, mit mpirun und LAMMPS rechnen und den Lauf öffnen</translation>
+    </message>
+    <message>
+        <source>Run on LAMMPS: choose a folder for the deck and LAMMPS&apos;s output</source>
+        <translation>Mit LAMMPS rechnen: einen Ordner für die Eingabe und die Ausgabe von LAMMPS wählen</translation>
+    </message>
+    <message>
+        <source>Run on LAMMPS</source>
+        <translation>Mit LAMMPS rechnen</translation>
+    </message>
+    <message>
+        <source>MPI ranks:</source>
+        <translation>MPI-Prozesse:</translation>
+    </message>
+    <message>
+        <source>Cannot run LAMMPS</source>
+        <translation>LAMMPS kann nicht ausgeführt werden</translation>
+    </message>
+    <message>
+        <source>The LAMMPS run did not open</source>
+        <translation>Der LAMMPS-Lauf wurde nicht geöffnet</translation>
+    </message>
+    <message>
+        <source>%1 is not installed: running on LAMMPS needs LAMMPS and MPI (Debian: apt install lammps openmpi-bin).</source>
+        <translation>%1 ist nicht installiert: Rechnen mit LAMMPS braucht LAMMPS und MPI (Debian: apt install lammps openmpi-bin).</translation>
+    </message>
+    <message>
+        <source>LAMMPS runs %1 steps on %2 ranks…</source>
+        <translation>LAMMPS rechnet %1 Schritte auf %2 Prozessen…</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <source>The LAMMPS run was cancelled; its deck and output so far are in %1.</source>
+        <translation>Der LAMMPS-Lauf wurde abgebrochen; seine Eingabe und die bisherige Ausgabe liegen in %1.</translation>
+    </message>
+    <message>
+        <source>LAMMPS failed (exit status %1) in %2; its last output:
+%3</source>
+        <translation>LAMMPS ist fehlgeschlagen (Exit-Status %1) in %2; seine letzte Ausgabe:
+%3</translation>
+    </message>
+</context>
+<context>
+    <name>pl::ui::MethodsLab</name>
+    <message>
+        <source>Time reversal</source>
+        <translation>Zeitumkehr</translation>
+    </message>
+    <message>
+        <source>Accuracy vs cost</source>
+        <translation>Genauigkeit gegen Kosten</translation>
+    </message>
+    <message>
+        <source>Stability map</source>
+        <translation>Stabilitätskarte</translation>
+    </message>
+    <message>
+        <source>Fluid</source>
+        <translation>Flüssigkeit</translation>
+    </message>
+    <message>
+        <source>DSMC</source>
+        <translation>DSMC</translation>
+    </message>
+    <message>
+        <source>MD vs DSMC</source>
+        <translation>MD gegen DSMC</translation>
+    </message>
+</context>
+<context>
+    <name>pl::ui::ParameterPanel</name>
+    <message>
+        <source>Reset now</source>
+        <translation>Jetzt zurücksetzen</translation>
+    </message>
+    <message>
+        <source>Restart the experiment so the parameters marked ⟲ take effect (Ctrl+R)</source>
+        <translation>Das Experiment neu starten, damit die mit ⟲ markierten Parameter wirken (Strg+R)</translation>
+    </message>
+    <message>
+        <source>Parameters marked ⟲ take effect on Reset; the others act at once.</source>
+        <translation>Mit ⟲ markierte Parameter wirken nach „Zurücksetzen“, die anderen sofort.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n change(s) wait for Reset.</source>
+        <translation>
+            <numerusform>%n Änderung wartet auf „Zurücksetzen“.</numerusform>
+            <numerusform>%n Änderungen warten auf „Zurücksetzen“.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1: “%2” is not a number (allowed: %3)</source>
+        <translation>%1: „%2“ ist keine Zahl (erlaubt: %3)</translation>
+    </message>
+</context>
+<context>
+    <name>pl::ui::PreferencesDialog</name>
+    <message>
+        <source>Preferences</source>
+        <translation>Einstellungen</translation>
+    </message>
+    <message>
+        <source>The language of menus, panels and messages</source>
+        <translation>Die Sprache von Menüs, Bedienfeldern und Meldungen</translation>
+    </message>
+    <message>
+        <source>&amp;Language:</source>
+        <translation>&amp;Sprache:</translation>
+    </message>
+    <message>
+        <source>A new language shows the next time ParticleLab starts.</source>
+        <translation>Eine neue Sprache erscheint beim nächsten Start von ParticleLab.</translation>
+    </message>
+</context>
+<context>
+    <name>pl::ui::PresentMode</name>
+    <message>
+        <source>Present</source>
+        <translation>Präsentation</translation>
+    </message>
+</context>
+<context>
+    <name>pl::ui::PresentPanel</name>
+    <message>
+        <source>Which of the scene&apos;s plots to show</source>
+        <translation>Welches Diagramm der Szene gezeigt wird</translation>
+    </message>
+    <message>
+        <source>Speed distribution</source>
+        <translation>Geschwindigkeitsverteilung</translation>
+    </message>
+    <message>
+        <source>v_x distribution</source>
+        <translation>v_x-Verteilung</translation>
+    </message>
+    <message>
+        <source>Leave (Esc)</source>
+        <translation>Verlassen (Esc)</translation>
+    </message>
+</context>
+<context>
+    <name>pl::ui::RecommendBar</name>
+    <message>
+        <source>Largest %1 you accept</source>
+        <translation>Größter akzeptierter Wert für %1</translation>
+    </message>
+    <message>
+        <source>Recommend</source>
+        <translation>Empfehlen</translation>
+    </message>
+    <message>
+        <source>The cheapest measured setting whose %1 is at most the target</source>
+        <translation>Die günstigste gemessene Einstellung, bei der %1 höchstens das Ziel erreicht</translation>
+    </message>
+    <message>
+        <source>Apply</source>
+        <translation>Übernehmen</translation>
+    </message>
+    <message>
+        <source>Target %1:</source>
+        <translation>Ziel für %1:</translation>
+    </message>
+    <message>
+        <source>Run the sweep first: there is nothing measured to choose from.</source>
+        <translation>Zuerst die Parameterstudie ausführen: Es gibt noch keine Messwerte zur Auswahl.</translation>
+    </message>
+    <message>
+        <source>No measured setting reaches %1; the best was not enough. Lower the target or extend the sweep.</source>
+        <translation>Keine gemessene Einstellung erreicht %1; auch die beste reichte nicht. Das Ziel senken oder die Parameterstudie erweitern.</translation>
+    </message>
+    <message>
+        <source>%1: error %2 at %3 %4</source>
+        <translation>%1: Fehler %2 bei %3 %4</translation>
+    </message>
+    <message>
+        <source>this sweep&apos;s settings belong to its test problem</source>
+        <translation>die Einstellungen dieser Parameterstudie gehören zu ihrem Testproblem</translation>
+    </message>
+    <message>
+        <source>Set this on the current experiment</source>
+        <translation>Dies im aktuellen Experiment einstellen</translation>
+    </message>
+    <message>
+        <source>Not applied: %1</source>
+        <translation>Nicht übernommen: %1</translation>
+    </message>
+    <message>
+        <source>Applied: %1</source>
+        <translation>Übernommen: %1</translation>
+    </message>
+    <message>
+        <source>s per unit time</source>
+        <translation>s pro Zeiteinheit</translation>
+    </message>
+</context>
+<context>
+    <name>pl::ui::RelaxPage</name>
+    <message>
+        <source>Two beams at ±u relax to one Maxwellian. Molecular dynamics resolves every contact of soft disks (about 30 steps each); DSMC with two velocity components only samples which pairs collide. Both reach the same Maxwellian in the same number of collisions: for a dilute gas&apos;s velocities DSMC is enough. It is not for a dense gas (collisions stop being binary and the finite size of the disks changes the pressure) or anything about structure (g(r), crystals, flow around an obstacle at the scale of a disk).</source>
+        <translation>Zwei Strahlen mit ±u relaxieren zu einer Maxwell-Verteilung. Die Molekulardynamik löst jeden Kontakt weicher Scheiben auf (je etwa 30 Schritte); DSMC mit zwei Geschwindigkeitskomponenten zieht nur Stichproben, welche Paare stoßen. Beide erreichen dieselbe Maxwell-Verteilung nach derselben Zahl von Stößen: Für die Geschwindigkeiten eines verdünnten Gases genügt DSMC. Nicht aber für ein dichtes Gas (Stöße sind nicht mehr binär, und die endliche Größe der Scheiben ändert den Druck) oder für Fragen der Struktur (g(r), Kristalle, Umströmung eines Hindernisses auf der Größenskala einer Scheibe).</translation>
+    </message>
+    <message>
+        <source>Particles:</source>
+        <translation>Teilchen:</translation>
+    </message>
+    <message>
+        <source>Collisions each:</source>
+        <translation>Stöße je Teilchen:</translation>
+    </message>
+    <message>
+        <source>collisions per particle</source>
+        <translation>Stöße pro Teilchen</translation>
+    </message>
+    <message>
+        <source>kurtosis of v_x (Maxwellian: 3)</source>
+        <translation>Kurtosis von v_x (Maxwell-Verteilung: 3)</translation>
+    </message>
+    <message>
+        <source>molecular dynamics</source>
+        <translation>Molekulardynamik</translation>
+    </message>
+    <message>
+        <source>DSMC (in the plane)</source>
+        <translation>DSMC (in der Ebene)</translation>
+    </message>
+    <message>
+        <source>Maxwellian</source>
+        <translation>Maxwell-Verteilung</translation>
+    </message>
+    <message>
+        <source>MD: %1 s for %2 particle-steps</source>
+        <translation>MD: %1 s für %2 Teilchenschritte</translation>
+    </message>
+    <message>
+        <source>Both relaxed: %1 and %2 collisions per particle</source>
+        <translation>Beide relaxiert: %1 und %2 Stöße pro Teilchen</translation>
+    </message>
+    <message>
+        <source>MD took %1 s, DSMC %2 s: DSMC was %3× cheaper for the same relaxation. Final v_x distributions: KS distance %4, p = %5 (%6).</source>
+        <translation>MD brauchte %1 s, DSMC %2 s: DSMC war für dieselbe Relaxation %3× günstiger. Endgültige v_x-Verteilungen: KS-Abstand %4, p = %5 (%6).</translation>
+    </message>
+    <message>
+        <source>one Maxwellian</source>
+        <translation>eine Maxwell-Verteilung</translation>
+    </message>
+    <message>
+        <source>they differ</source>
+        <translation>sie unterscheiden sich</translation>
+    </message>
+    <message>
+        <source>MD against DSMC</source>
+        <translation>MD gegen DSMC</translation>
+    </message>
+</context>
+<context>
+    <name>pl::ui::SeriesPlot</name>
+    <message>
+        <source>time</source>
+        <translation>Zeit</translation>
+    </message>
+    <message>
+        <source>%1 (backwards)</source>
+        <translation>%1 (rückwärts)</translation>
+    </message>
+    <message>
+        <source>time running backwards</source>
+        <translation>Zeit läuft rückwärts</translation>
+    </message>
+    <message>
+        <source>time run, Σ |Δt|</source>
+        <translation>gelaufene Zeit, Σ |Δt|</translation>
+    </message>
+</context>
+<context>
+    <name>pl::ui::SimulationController</name>
+    <message>
+        <source>Computing on the %1 now; the experiment restarted from its parameters.</source>
+        <translation>Rechnet jetzt auf der %1; das Experiment wurde mit seinen Parametern neu gestartet.</translation>
+    </message>
+    <message>
+        <source>GPU</source>
+        <translation>GPU</translation>
+    </message>
+    <message>
+        <source>CPU</source>
+        <translation>CPU</translation>
+    </message>
+    <message>
+        <source>No experiment is loaded.</source>
+        <translation>Kein Experiment geladen.</translation>
+    </message>
+    <message>
+        <source>The run is complete (%1 steps): Reset to run it again, or raise the run length.</source>
+        <translation>Der Lauf ist beendet (%1 Schritte): Zurücksetzen, um ihn erneut auszuführen, oder die Laufdauer erhöhen.</translation>
+    </message>
+    <message>
+        <source>This scene cannot run backwards: its collisions are random, so time has one direction.</source>
+        <translation>Diese Szene kann nicht rückwärts laufen: Ihre Stöße sind zufällig, daher hat die Zeit eine Richtung.</translation>
+    </message>
+    <message>
+        <source>Run complete: %1 steps.</source>
+        <translation>Lauf beendet: %1 Schritte.</translation>
+    </message>
+    <message>
+        <source>This run is read-only: open a preset to change parameters.</source>
+        <translation>Dieser Lauf ist schreibgeschützt: Zum Ändern der Parameter eine Vorlage öffnen.</translation>
+    </message>
+</context>
+<context>
+    <name>pl::ui::StabilityPage</name>
+    <message>
+        <source>Where each integrator fails. A light disk caged between two heavy ones oscillates at ω = √(2k) (the contact of two unit-mass disks) for 2000 steps: stable, inaccurate (energy error above 1 %) or unstable (its energy grew 50×). The line is the linear theory&apos;s limit: ω dt = 2 for Verlet and symplectic Euler, 2√2 for RK4, 1.57 for Forest–Ruth; explicit Euler has none.</source>
+        <translation>Wo jeder Integrator versagt. Eine leichte Scheibe, eingesperrt zwischen zwei schweren, schwingt 2000 Schritte lang mit ω = √(2k) (der Kontakt zweier Scheiben mit Einheitsmasse): stabil, ungenau (Energiefehler über 1 %) oder instabil (ihre Energie wuchs auf das 50-Fache). Die Linie ist die Grenze der linearen Theorie: ω dt = 2 für Verlet und symplektischen Euler, 2√2 für RK4, 1.57 für Forest–Ruth; der explizite Euler hat keine.</translation>
+    </message>
+    <message>
+        <source>Integrator:</source>
+        <translation>Integrator:</translation>
+    </message>
+    <message>
+        <source>time step dt [T]</source>
+        <translation>Zeitschritt dt [T]</translation>
+    </message>
+    <message>
+        <source>stiffness k [M/T²] (unit masses)</source>
+        <translation>Steifigkeit k [M/T²] (Einheitsmassen)</translation>
+    </message>
+    <message>
+        <source>linear limit ω dt = %1</source>
+        <translation>lineare Grenze ω dt = %1</translation>
+    </message>
+    <message>
+        <source>current gas</source>
+        <translation>aktuelles Gas</translation>
+    </message>
+    <message>
+        <source>k = %1: no cell blew up</source>
+        <translation>k = %1: keine Zelle ist explodiert</translation>
+    </message>
+    <message>
+        <source>k = %1: stable up to ω dt = %2</source>
+        <translation>k = %1: stabil bis ω dt = %2</translation>
+    </message>
+    <message>
+        <source>Stability map</source>
+        <translation>Stabilitätskarte</translation>
+    </message>
+</context>
+<context>
+    <name>pl::ui::ViewportCore</name>
+    <message>
+        <source>This experiment has no piston: tick “Piston” in Parameters → Walls and fields.</source>
+        <translation>Dieses Experiment hat keinen Kolben: „Kolben“ unter Parameter → Wände und Felder ankreuzen.</translation>
+    </message>
+</context>
+</TS>

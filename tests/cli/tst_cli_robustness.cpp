@@ -1,0 +1,275 @@
+// One test per defect the CLI had: bad options (exit 2 with a sentence), blow-ups caught at the row and
+// at the end, DSMC runs it cannot do in reasonable time, output files (links, FIFOs, devices,
+// permissions, paths checked first), rows kept when a run is stopped by a signal, strict input syntax.
+#include "CliRunner.h"
+
+#include <QElapsedTimer>
+#include <QFile>
+#include <QRegularExpression>
+#include <QTemporaryDir>
+#include <QtTest>
+
+#include <csignal>
+#include <sys/stat.h>
+#include <sys/types.h>
+#include <unistd.h>
+
+using pl::test::runCli;
+
+namespace {
+
+QStringList readLines(const QString& path) {
+    QFile f(path);
+    if (!f.open(QIODevice::ReadOnly)) return {};
+    return QString::fromUtf8(f.readAll()).split('\n', Qt::SkipEmptyParts);
+}
+
+void writeFile(const QString& path, const QByteArray& text) {
+    QFile f(path);
+    QVERIFY(f.open(QIODevice::WriteOnly));
+    f.write(text);
+}
+
+// A stopped run: the series file has rows, every row whole, then the signal ends it cleanly.
+void stopRunWith(int signal, int expectedExit) {
+    QTemporaryDir dir;
+    const QString series = dir.filePath("s.csv"), hist = dir.filePath("h.csv");
+    QProcess p;
+    p.start(PARTICLELAB_CLI, {"run", "gas-classroom", "--steps", "1000000000", "--every", "5", "--out",
+                              series, "--histogram", hist, "--quiet", "--threads", "1"});
+    QVERIFY(p.waitForStarted());
+    QElapsedTimer clock;
+    clock.start();
+    while (readLines(series).size() < 4 && clock.elapsed() < 30000) QTest::qWait(50); // rows as sampled
+    QVERIFY2(readLines(series).size() >= 4, "no rows were written while the run went on");
+    ::kill(static_cast<pid_t>(p.processId()), signal);
+    QVERIFY(p.waitForFinished(30000));
+    QCOMPARE(p.exitStatus(), QProcess::NormalExit);
+    QCOMPARE(p.exitCode(), expectedExit);
+    const QString err = QString::fromUtf8(p.readAllStandardError());
+    QVERIFY2(err.contains("stopped by") && err.contains("rows sampled until then are kept"), qPrintable(err));
+    const QStringList rows = readLines(series);
+    const qsizetype columns = rows[0].split(',').size();
+    for (const QString& row : rows) QCOMPARE(row.split(',').size(), columns);
+    QVERIFY(readLines(hist).size() > 1); // the final histogram of what was measured
+}
+
+} // namespace
+
+class TestCliRobustness : public QObject {
+    Q_OBJECT
+private slots:
+    void badOptionsAreExit2WithASentence_data() {
+        QTest::addColumn<QStringList>("args");
+        QTest::addColumn<QString>("message");
+        const QStringList run{"run", "gas-seed", "--quiet"};
+        QTest::newRow("threads 0") << run + QStringList{"--threads", "0"} << "--threads: must be from 1 to";
+        QTest::newRow("threads 5000") << run + QStringList{"--threads", "5000"} << "4 × the";
+        QTest::newRow("threads 100000")
+            << run + QStringList{"--threads", "100000"} << "cores of this machine";
+        QTest::newRow("steps -5") << run + QStringList{"--steps", "-5"}
+                                  << "--steps: must be from 0 to 1000000000";
+        QTest::newRow("steps 1e12") << run + QStringList{"--steps", "1e12"} << "days of computing";
+        QTest::newRow("steps 2.5") << run + QStringList{"--steps", "2.5"} << "must be a whole number";
+        QTest::newRow("steps abc") << run + QStringList{"--steps", "abc"} << "must be a whole number";
+        QTest::newRow("every 0") << run + QStringList{"--every", "0"} << "--every: must be from 1";
+        QTest::newRow("huge steps") << run + QStringList{"--steps", QString(309, '9')} << "(309 characters)";
+        QTest::newRow("unknown flag") << run + QStringList{"--bogus"} << "not expected: --bogus";
+        QTest::newRow("no subcommand") << QStringList{} << "A subcommand is required";
+        QTest::newRow("empty out") << run + QStringList{"--out", ""} << "--out: needs a file name";
+        QTest::newRow("bench repeats") << QStringList{"bench", "gas-seed", "--repeats", "0"} << "--repeats";
+        QTest::newRow("relax particles") << QStringList{"relax", "--particles", "2"} << "from 4 to";
+        QTest::newRow("stiffness 0") << QStringList{"sweep", "--stiffness", "0"} << "above 0";
+        QTest::newRow("set with space")
+            << run + QStringList{"--set", "dt= 1"} << "must be a number, got \" 1\"";
+        QTest::newRow("set hexadecimal") << run + QStringList{"--set", "dt=0x10"} << "got \"0x10\"";
+    }
+    void badOptionsAreExit2WithASentence() {
+        QFETCH(QStringList, args);
+        QFETCH(QString, message);
+        const auto r = runCli(args, 30000);
+        QVERIFY(!r.crashed && !r.timedOut);
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.startsWith("particlelab-cli: ") && r.err.contains(message), qPrintable(r.err));
+        QVERIFY2(!r.err.contains(QRegularExpression("\\d{25}")), qPrintable(r.err)); // no 309-digit bounds
+        QVERIFY(r.err.size() < 600);
+    }
+
+    void helpStaysExit0() {
+        const auto r = runCli({"run", "--help"});
+        QCOMPARE(r.exitCode, 0);
+        QVERIFY(r.out.contains("--threads"));
+    }
+
+    void blowUpAtTheLastStepIsNotExit0() {
+        const auto r = runCli({"run", "gas-classroom", "--steps", "63", "--set", "dt=0.002", "--set",
+                               "stiffness=1e6", "--quiet"});
+        QCOMPARE(r.exitCode, 3);
+        QVERIFY2(r.err.contains("the total energy grew") && r.err.contains("at step 63"), qPrintable(r.err));
+    }
+
+    void noExplodedRowIsWritten() {
+        QTemporaryDir dir;
+        const QString series = dir.filePath("s.csv");
+        const auto r = runCli({"run", "gas-classroom", "--steps", "64", "--every", "1", "--set", "dt=0.002",
+                               "--set", "stiffness=1e6", "--out", series, "--quiet"});
+        QCOMPARE(r.exitCode, 3);
+        const QStringList rows = readLines(series);
+        QVERIFY(rows.size() > 2);
+        const int total = int(rows[0].split(',').indexOf("total"));
+        const double first = rows[1].split(',')[total].toDouble();
+        for (const QString& row : rows.mid(1)) {
+            const double e = row.split(',')[total].toDouble();
+            QVERIFY2(std::isfinite(e) && e <= 100 * first, qPrintable(row)); // within the runaway bound
+        }
+    }
+
+    void rk4HintComparesWithTheUnroundedLimit() {
+        const auto inside = runCli({"run", "gas-classroom", "--steps", "200", "--set", "integrator=rk4",
+                                    "--set", "stiffness=1e6", "--set", "dt=0.0019996", "--quiet"});
+        QCOMPARE(inside.exitCode, 3);
+        QVERIFY2(inside.err.contains("dt·ω = 2.8279 is inside the stability limit 2.8284"),
+                 qPrintable(inside.err));
+        const auto outside = runCli({"run", "gas-classroom", "--steps", "200", "--set", "integrator=rk4",
+                                     "--set", "stiffness=1e6", "--set", "dt=0.0020001", "--quiet"});
+        QCOMPARE(outside.exitCode, 3);
+        QVERIFY2(outside.err.contains("dt·ω = 2.829 > 2.828: rk4 is unstable"), qPrintable(outside.err));
+    }
+
+    void dsmcRefusesWhatItCannotDoInTime() {
+        QElapsedTimer clock;
+        clock.start();
+        const auto r = runCli({"run", "dsmc-bkw", "--set", "dt=3.33", "--steps", "1", "--quiet"}, 30000);
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains("collisions per particle and step") &&
+                     r.err.contains("use dt ≤ 8.33e-05 s") && r.err.contains("fn ≤"),
+                 qPrintable(r.err));
+        const auto huge =
+            runCli({"run", "dsmc-seed", "--set", "fn=9223372036854775807", "--steps", "1"}, 30000);
+        QCOMPARE(huge.exitCode, 2);
+        QVERIFY(clock.elapsed() < 20000); // refused before any step, not after a 27 s one
+    }
+
+    void dsmcWarnsWhenInaccurate() {
+        const auto r = runCli({"run", "dsmc-bkw", "--set", "dt=6.67e-4", "--steps", "2", "--quiet"});
+        QCOMPARE(r.exitCode, 0);
+        QVERIFY2(r.err.contains("warning: ν Δt is up to 2 collisions per particle and step, above Bird's"),
+                 qPrintable(r.err));
+        QVERIFY(!runCli({"run", "dsmc-bkw", "--steps", "2", "--quiet"}).err.contains("warning"));
+    }
+
+    void outputsWriteThroughLinksAndKeepPermissions() {
+        QTemporaryDir dir;
+        const QString target = dir.filePath("target.csv"), link = dir.filePath("link.csv"),
+                      hist = dir.filePath("h.csv"), histLink = dir.filePath("hl.csv");
+        writeFile(target, "old\n");
+        writeFile(hist, "old\n");
+        QVERIFY(::chmod(target.toUtf8().constData(), 0600) == 0 &&
+                ::chmod(hist.toUtf8().constData(), 0640) == 0);
+        QVERIFY(QFile::link(target, link) && QFile::link(hist, histLink));
+        const auto r = runCli({"run", "gas-seed", "--steps", "2", "--every", "1", "--out", link,
+                               "--histogram", histLink, "--quiet"});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        QVERIFY(QFileInfo(link).isSymLink() && QFileInfo(histLink).isSymLink()); // links stay links
+        QCOMPARE(readLines(target).size(), 1 + 3);
+        QVERIFY(readLines(hist).size() > 1);
+        struct stat st {};
+        QVERIFY(::stat(target.toUtf8().constData(), &st) == 0);
+        QCOMPARE(int(st.st_mode & 07777), 0600);
+        QVERIFY(::stat(hist.toUtf8().constData(), &st) == 0);
+        QCOMPARE(int(st.st_mode & 07777), 0640); // replaced atomically, permissions kept
+    }
+
+    void nonRegularTargetsAreRefusedBeforeTheRun() {
+        QTemporaryDir dir;
+        const QString fifo = dir.filePath("fifo");
+        QVERIFY(::mkfifo(fifo.toUtf8().constData(), 0644) == 0);
+        QElapsedTimer clock;
+        clock.start();
+        for (const QString& path : {fifo, QString("/dev/null"), dir.path(), QString("/nonexistent/s.csv")})
+            for (const char* option : {"--out", "--histogram", "--dump-final"}) {
+                const auto r = runCli({"run", "gas-seed", "--steps", "1000000000", option, path}, 20000);
+                QVERIFY2(!r.timedOut, qPrintable(path));
+                QCOMPARE(r.exitCode, 4);
+                QVERIFY2(r.err.contains(path), qPrintable(r.err));
+            }
+        QVERIFY(clock.elapsed() < 20000); // found before a 10⁹-step run, not after it
+        QVERIFY(QFileInfo(fifo).exists() && !QFileInfo(fifo).isFile()); // the FIFO is still a FIFO
+    }
+
+    void staleTempFilesOfAKilledWriteAreRemoved() {
+        QTemporaryDir dir;
+        const QString hist = dir.filePath("h.csv"), stale = hist + ".tmp-AbC123",
+                      fresh = hist + ".tmp-XyZ789", unrelated = hist + ".backup";
+        for (const QString& f : {stale, fresh, unrelated}) writeFile(f, "half");
+        QFile old(stale);
+        QVERIFY(old.open(QIODevice::ReadWrite));
+        QVERIFY(
+            old.setFileTime(QDateTime::currentDateTime().addSecs(-3600), QFileDevice::FileModificationTime));
+        old.close();
+        QCOMPARE(runCli({"run", "gas-seed", "--steps", "1", "--histogram", hist, "--quiet"}).exitCode, 0);
+        QVERIFY(!QFileInfo::exists(stale));
+        QVERIFY(QFileInfo::exists(fresh));     // may belong to a writer that is still alive
+        QVERIFY(QFileInfo::exists(unrelated)); // not a temporary file's name
+        QVERIFY(readLines(hist).size() > 1);
+        QCOMPARE(QDir(dir.path()).entryList(QDir::Files).size(), 3);
+    }
+
+    void memoryStaysFlatOverALongRun() {
+        if (qEnvironmentVariableIsSet("ASAN_OPTIONS")) // .ci/sanitize.sh
+            QSKIP("AddressSanitizer keeps freed memory in quarantine: resident memory grows by design");
+        QTemporaryDir dir;
+        const QString series = dir.filePath("s.csv");
+        QProcess p;
+        p.start(PARTICLELAB_CLI, {"run", "dsmc-seed", "--steps", "100000", "--out", series, "--quiet"});
+        QVERIFY(p.waitForStarted());
+        const QString status = QString("/proc/%1/status").arg(p.processId());
+        long long early = 0, peak = 0; // resident kB once a tenth of the rows is written, and the most
+        while (!p.waitForFinished(50)) {
+            QFile f(status);
+            if (!f.open(QIODevice::ReadOnly)) continue;
+            const QString text = QString::fromUtf8(f.readAll());
+            const auto match = QRegularExpression("VmRSS:\\s+(\\d+) kB").match(text);
+            if (!match.hasMatch()) continue;
+            const long long rss = match.captured(1).toLongLong();
+            if (early == 0 && readLines(series).size() > 10000) early = rss;
+            if (early > 0) peak = std::max(peak, rss);
+        }
+        QCOMPARE(p.exitCode(), 0);
+        QCOMPARE(readLines(series).size(), 1 + 100001);
+        QVERIFY2(early > 0, "the run ended before it could be measured");
+        // Every sampled row held in memory would be about 20 MB more here.
+        QVERIFY2(peak - early < 4000, qPrintable(QString("%1 kB then %2 kB").arg(early).arg(peak)));
+    }
+
+    void sigintKeepsTheRowsAndExits130() { stopRunWith(SIGINT, 130); }
+    void sigtermKeepsTheRowsAndExits143() { stopRunWith(SIGTERM, 143); }
+
+    void duplicateKeysAreRefusedByPath_data() {
+        QTest::addColumn<QByteArray>("json");
+        QTest::addColumn<QString>("message");
+        QTest::newRow("param twice") << QByteArray(
+                                            R"({"schema":1,"model":"gas","params":{"dt":5,"dt":0.0001}})")
+                                     << "duplicate key 'params.dt'";
+        QTest::newRow("params twice")
+            << QByteArray(R"({"schema":1,"model":"gas","params":{"dt":0.0001},"params":{}})")
+            << "duplicate key 'params'";
+        QTest::newRow("obstacle key twice")
+            << QByteArray(
+                   R"({"schema":1,"model":"gas","obstacles":[{},{"shape":"disc","x":0,"x":1,"y":0,"radius":0.1}]})")
+            << "duplicate key 'obstacles[1].x'";
+    }
+    void duplicateKeysAreRefusedByPath() {
+        QFETCH(QByteArray, json);
+        QFETCH(QString, message);
+        QTemporaryDir dir;
+        const QString path = dir.filePath("p.json");
+        writeFile(path, json);
+        const auto r = runCli({"run", path, "--steps", "1"});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains(message), qPrintable(r.err));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestCliRobustness)
+#include "tst_cli_robustness.moc"

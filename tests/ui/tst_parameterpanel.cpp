@@ -1,0 +1,159 @@
+// One way to reject a value: a rejected field keeps what was typed, turns red and says under it, in the
+// labels' words with unit and allowed range, what is wrong; no dialog opens and the model is untouched.
+// A valid value clears the mark. Values are typed with QTest into the panel's real editors.
+#include "ExperimentDocument.h"
+#include "MainWindow.h"
+#include "SimulationController.h"
+#include "UiTestSupport.h"
+#include "panels/ParameterPanel.h"
+
+#include <QAbstractSpinBox>
+#include <QLabel>
+#include <QLineEdit>
+#include <QRegularExpression>
+#include <QScrollArea>
+#include <QSettings>
+#include <QStandardPaths>
+#include <QtTest>
+
+using namespace pl;
+
+namespace {
+
+// Replaces a field's text as a user does: click into it, select all, type, Enter.
+void typeInto(QWidget* field, const QString& text) {
+    auto* box = qobject_cast<QAbstractSpinBox*>(field);
+    QVERIFY(box);
+    for (QWidget* w = box; w; w = w->parentWidget()) // scrolled into view, where the click can reach it
+        if (auto* scroll = qobject_cast<QScrollArea*>(w)) scroll->ensureWidgetVisible(box);
+    QLineEdit* edit = box->findChild<QLineEdit*>();
+    QTest::mouseClick(edit, Qt::LeftButton, {}, edit->rect().center());
+    QCOMPARE(QApplication::focusWidget(), box);
+    QTest::keyClick(box, Qt::Key_A, Qt::ControlModifier);
+    QTest::keyClicks(box, text);
+    QTest::keyClick(box, Qt::Key_Return);
+}
+
+QString allowedFor(const Model* model, const std::string& key) {
+    return QString::fromStdString(describeAllowed(*findSpec(model->paramSpecs(), key)));
+}
+
+bool looksRed(QWidget* field) {
+    const QColor base = field->palette().color(QPalette::Base);
+    return base.red() > base.green() + 20;
+}
+
+} // namespace
+
+class TestParameterPanel : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase() {
+        QStandardPaths::setTestModeEnabled(true);
+        QSettings().clear();
+    }
+
+    void init() {
+        window_ = std::make_unique<ui::MainWindow>();
+        QVERIFY(window_->openPreset("gas-mixture"));
+        window_->resize(1280, 800);
+        window_->show();
+        window_->activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(window_.get()));
+        panel_ = window_->parameters();
+    }
+
+    void cleanup() {
+        window_->document()->setModified(false);
+        window_.reset();
+    }
+
+    void aTimeStepOutOfRangeStaysRedAndSaysWhy() {
+        test::MessageBoxAnswerer dialogs;
+        const Model* model = window_->controller()->model();
+        const ParamValues before = model->params();
+        QWidget* dt = panel_->editor("dt");
+        QVERIFY(!looksRed(dt));
+        typeInto(dt, "10");
+        QTest::qWait(60); // a dialog, were there one, would be seen and answered by now
+
+        QCOMPARE(qobject_cast<QAbstractSpinBox*>(dt)->text(), QString("10")); // not reverted
+        QVERIFY(looksRed(dt));
+        const QString problem = panel_->problem("dt");
+        QVERIFY2(problem.contains("Time step") && problem.contains(allowedFor(model, "dt")),
+                 qPrintable(problem));
+        QVERIFY2(!problem.contains("'dt'"), qPrintable(problem));
+        auto* line = panel_->findChild<QLabel*>("problem-dt");
+        QVERIFY(line && line->isVisible() && line->text() == problem);
+        QVERIFY(window_->controller()->model()->params() == before);
+        QVERIFY2(dialogs.texts.isEmpty(), qPrintable(dialogs.texts.join('\n')));
+        QDir().mkpath(PARTICLELAB_SCREENSHOT_DIR); // for a person to look at: the red field and its line
+        QVERIFY(window_->windowImage().save(QString(PARTICLELAB_SCREENSHOT_DIR) +
+                                            "/parameterpanel-rejected.png"));
+
+        typeInto(panel_->editor("dt"), "0.0002");
+        QVERIFY(panel_->problem("dt").isEmpty());
+        QVERIFY(!line->isVisible());
+        QVERIFY(!looksRed(dt));
+        QCOMPARE(std::get<double>(window_->controller()->model()->params().at("dt")), 0.0002);
+    }
+
+    void aNegativeDiameterIsReportedNotReverted() {
+        test::MessageBoxAnswerer dialogs;
+        const double before = std::get<double>(window_->controller()->model()->params().at("diameter_a"));
+        typeInto(panel_->editor("diameter_a"), "-0.1");
+        QCOMPARE(qobject_cast<QAbstractSpinBox*>(panel_->editor("diameter_a"))->text(), QString("-0.1"));
+        const QString problem = panel_->problem("diameter_a");
+        QVERIFY2(problem.contains("Diameter (A)") && problem.contains("-0.1") &&
+                     problem.contains(allowedFor(window_->controller()->model(), "diameter_a")),
+                 qPrintable(problem));
+        QCOMPARE(std::get<double>(window_->controller()->model()->params().at("diameter_a")), before);
+        QVERIFY(dialogs.texts.isEmpty());
+    }
+
+    void errorsAcrossFieldsNameLabelsNotKeys() {
+        // More disks than the particle cap: the message speaks of both fields by their labels.
+        const double cap = std::get<double>(window_->controller()->model()->params().at("max_particles"));
+        typeInto(panel_->editor("count_a"), QString::number(static_cast<qint64>(cap) + 1));
+        const QString problem = panel_->problem("count_a");
+        QVERIFY2(problem.contains("Disks (A)") && problem.contains("Particle cap"), qPrintable(problem));
+        static const QRegularExpression internalKey("\\b[a-z]+_[a-z0-9_]+\\b");
+        QVERIFY2(!internalKey.match(problem).hasMatch(), qPrintable(problem));
+    }
+
+    void aFractionInAnIntegerFieldStaysAsTyped() {
+        typeInto(panel_->editor("count_a"), "2.5");
+        QCOMPARE(qobject_cast<QAbstractSpinBox*>(panel_->editor("count_a"))->text(), QString("2.5"));
+        QVERIFY2(panel_->problem("count_a").contains("integer"), qPrintable(panel_->problem("count_a")));
+    }
+
+    void textThatIsNoNumberStaysUntilEscape() {
+        auto* dt = qobject_cast<QAbstractSpinBox*>(panel_->editor("dt"));
+        const QString shown = dt->text();
+        typeInto(dt, "1e");
+        QCOMPARE(dt->text(), QString("1e"));
+        QVERIFY2(panel_->problem("dt").contains("not a number"), qPrintable(panel_->problem("dt")));
+        QVERIFY(looksRed(dt));
+        // Escape drops what was typed: the field shows the value in use again, and is no longer red.
+        QLineEdit* edit = dt->findChild<QLineEdit*>();
+        QTest::mouseClick(edit, Qt::LeftButton, {}, edit->rect().center());
+        QTest::keyClick(dt, Qt::Key_Escape);
+        QCOMPARE(dt->text(), shown);
+        QVERIFY(panel_->problem("dt").isEmpty());
+        QVERIFY(!looksRed(dt));
+    }
+
+    void otherEditsLeaveARejectedFieldAlone() {
+        typeInto(panel_->editor("dt"), "10");
+        QVERIFY(panel_->apply("gravity", 0.5).isEmpty()); // every field is shown again after a change
+        QCOMPARE(qobject_cast<QAbstractSpinBox*>(panel_->editor("dt"))->text(), QString("10"));
+        QVERIFY(!panel_->problem("dt").isEmpty());
+    }
+
+private:
+    std::unique_ptr<ui::MainWindow> window_;
+    ui::ParameterPanel* panel_ = nullptr;
+};
+
+QTEST_MAIN(TestParameterPanel)
+#include "tst_parameterpanel.moc"

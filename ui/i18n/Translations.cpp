@@ -1,0 +1,98 @@
+// Installs ParticleLab's and Qt's translators: the one place that knows where catalogues live
+// (qt_add_translations embeds ours under :/i18n; Qt's come from its installation).
+#include "Translations.h"
+
+#include "CoreStrings.h"
+#include "common/ParamSpec.h"
+
+#include <QCoreApplication>
+#include <QLibraryInfo>
+#include <QLocale>
+#include <QSettings>
+#include <QTranslator>
+#include <memory>
+
+namespace pl::ui {
+
+namespace {
+
+constexpr auto kSettingsKey = "ui/language";
+constexpr auto kCatalogueDir = ":/i18n";
+constexpr auto kCatalogueName = "particlelab";
+
+struct Installed {
+    std::unique_ptr<QTranslator> own, qt;
+    QString code = QStringLiteral("en");
+};
+
+Installed& installed() {
+    static Installed state;
+    return state;
+}
+
+// Loads catalogue "<name>_<lang>.qm" from dir for the first language of locale that has one.
+std::unique_ptr<QTranslator> load(const QLocale& locale, const QString& name, const QString& dir) {
+    auto translator = std::make_unique<QTranslator>();
+    if (!translator->load(locale, name, QStringLiteral("_"), dir)) return nullptr;
+    return translator;
+}
+
+} // namespace
+
+QList<Language> availableLanguages() {
+    // English is the source language and always there; the others are the embedded catalogues.
+    return {{QString(), QCoreApplication::translate("pl::ui::Language", "System default")},
+            {QStringLiteral("en"), QStringLiteral("English")},
+            {QStringLiteral("de"), QStringLiteral("Deutsch")}};
+}
+
+bool installLanguage(const QString& code) {
+    Installed& state = installed();
+    for (auto* translator : {&state.own, &state.qt}) {
+        if (*translator) QCoreApplication::removeTranslator(translator->get());
+        translator->reset();
+    }
+    const QLocale locale = code.isEmpty() ? QLocale::system() : QLocale(code);
+    // English texts are the sources, but the English catalogue still carries the plural forms (%n), so
+    // it stands in for a language without a catalogue.
+    state.own = load(locale, kCatalogueName, kCatalogueDir);
+    const bool found = state.own != nullptr;
+    if (!found) state.own = load(QLocale(QLocale::English), kCatalogueName, kCatalogueDir);
+    if (state.own && state.own->language() != QStringLiteral("en"))
+        state.qt = load(locale, QStringLiteral("qtbase"), QLibraryInfo::path(QLibraryInfo::TranslationsPath));
+    for (auto* translator : {&state.own, &state.qt})
+        if (*translator) QCoreApplication::installTranslator(translator->get());
+    state.code = state.own ? QLocale(state.own->language()).name().section('_', 0, 0) : QStringLiteral("en");
+    return found;
+}
+
+QString installedLanguage() {
+    return installed().code;
+}
+
+QString savedLanguage() {
+    return QSettings().value(kSettingsKey).toString();
+}
+
+void saveLanguage(const QString& code) {
+    QSettings().setValue(kSettingsKey, code);
+}
+
+QString coreText(const std::string& text) {
+    return QCoreApplication::translate(kCoreContext, text.c_str());
+}
+
+QString translatedLabel(const ParamSpec& spec) {
+    return coreText(spec.label);
+}
+QString translatedUnit(const ParamSpec& spec) {
+    return coreText(spec.unit);
+}
+QString translatedGroup(const ParamSpec& spec) {
+    return coreText(spec.group);
+}
+QString translatedTooltip(const ParamSpec& spec) {
+    return coreText(spec.tooltip);
+}
+
+} // namespace pl::ui

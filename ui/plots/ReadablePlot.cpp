@@ -1,0 +1,148 @@
+// ReadablePlot: runs on QCustomPlot::afterLayout, when the axis rects have their sizes for this frame. A
+// legend whose column count changes asks for one more layout; the count depends only on the plot's
+// width, so that settles at once.
+#include "ReadablePlot.h"
+
+#include <QFontMetricsF>
+#include <algorithm>
+#include <qcustomplot.h>
+
+namespace pl::ui {
+
+namespace {
+constexpr double kSmallestLabelScale = 0.75; // a label shrinks this far before it is shortened
+constexpr double kLegendRowStretch = 0.001;  // the legend row keeps its minimum height
+constexpr double kMaxLegendShare = 0.3;      // of a panel's height (legend row and axis rect)
+constexpr double kSmallestLegendScale = 0.65;
+constexpr double kLegendScaleStep = 0.1;
+constexpr double kTickRowsPerLabel = 2.2;    // a value tick every 2.2 text lines at most
+constexpr double kTickColumnsPerLabel = 1.6; // and a time tick every 1.6 label widths
+constexpr int kMostTicks = 6;
+const QString kTypicalTickLabel = QStringLiteral("0.0000");
+
+// Lays the entries out in this many columns (rows fill left to right) and returns the legend's size.
+QSize arrange(QCPLegend* legend, int columns) {
+    legend->setFillOrder(QCPLayoutGrid::foColumnsFirst, false);
+    legend->setWrap(columns);
+    legend->setFillOrder(QCPLayoutGrid::foColumnsFirst, true); // re-flows the entries
+    return legend->minimumOuterSizeHint();
+}
+
+// The most columns that fit the width; returns the legend's height then.
+int flow(QCPLegend* legend, int width) {
+    int columns = std::max(1, legend->itemCount());
+    while (columns > 1 && arrange(legend, columns).width() > width) --columns;
+    return arrange(legend, columns).height();
+}
+
+// Flows the legend into the width and, where it would still take more than kMaxLegendShare of its
+// panel's height, sets its text smaller (to kSmallestLegendScale). True when the legend changed.
+bool fitLegend(QCPLegend* legend, int width, int panelHeight) {
+    if (legend->property("pl_shownFont").value<QFont>() != legend->font())
+        legend->setProperty("pl_baseFont", legend->font()); // a font set from outside (projector mode)
+    const QFont base = legend->property("pl_baseFont").value<QFont>();
+    const int wrapBefore = legend->wrap();
+    const QFont fontBefore = legend->font();
+    for (double scale = 1.0;; scale -= kLegendScaleStep) {
+        QFont font = base;
+        font.setPointSizeF(base.pointSizeF() * std::max(scale, kSmallestLegendScale));
+        legend->setFont(font);
+        if (flow(legend, width) <= kMaxLegendShare * panelHeight || scale <= kSmallestLegendScale) break;
+    }
+    legend->setProperty("pl_shownFont", legend->font());
+    return legend->wrap() != wrapBefore || legend->font() != fontBefore;
+}
+
+// A vertical label longer than its axis runs past the rect into a title or the next panel.
+void fitValueLabel(QCPAxisRect* rect) {
+    QCPAxis* axis = rect->axis(QCPAxis::atLeft);
+    if (axis->property("pl_shownLabel").toString() != axis->label() ||
+        axis->property("pl_shownFont").value<QFont>() != axis->labelFont()) { // set from outside
+        axis->setProperty("pl_fullLabel", axis->label());
+        axis->setProperty("pl_labelFont", axis->labelFont());
+    }
+    const QString full = axis->property("pl_fullLabel").toString();
+    const QFont base = axis->property("pl_labelFont").value<QFont>();
+    if (full.isEmpty()) return;
+    const double room = rect->height();
+    QFont font = base;
+    const double length = QFontMetricsF(base).horizontalAdvance(full);
+    if (length > room) font.setPointSizeF(base.pointSizeF() * std::max(kSmallestLabelScale, room / length));
+    const QString shown = QFontMetricsF(font).elidedText(full, Qt::ElideRight, room);
+    axis->setLabelFont(font);
+    axis->setLabel(shown);
+    axis->setProperty("pl_shownLabel", shown);
+    axis->setProperty("pl_shownFont", font);
+}
+// Fewer ticks on a short or narrow axis, so its tick values never run into each other.
+void fitTickCounts(QCPAxisRect* rect) {
+    QCPAxis* y = rect->axis(QCPAxis::atLeft);
+    QCPAxis* x = rect->axis(QCPAxis::atBottom);
+    const QFontMetricsF yMetrics(y->tickLabelFont()), xMetrics(x->tickLabelFont());
+    const int rows = static_cast<int>(rect->height() / (kTickRowsPerLabel * yMetrics.height()));
+    const int columns = static_cast<int>(
+        rect->width() / (kTickColumnsPerLabel * xMetrics.horizontalAdvance(kTypicalTickLabel)));
+    y->ticker()->setTickCount(std::clamp(rows, 2, kMostTicks));
+    x->ticker()->setTickCount(std::clamp(columns, 2, kMostTicks));
+}
+
+// A title (or a line of it) wider than the plot is set smaller, then shortened.
+void fitTitle(QCPTextElement* title, double width) {
+    if (title->property("pl_shownText").toString() != title->text() ||
+        title->property("pl_shownFont").value<QFont>() != title->font()) {
+        title->setProperty("pl_fullText", title->text());
+        title->setProperty("pl_baseFont", title->font());
+    }
+    const QStringList lines = title->property("pl_fullText").toString().split('\n');
+    const QFont base = title->property("pl_baseFont").value<QFont>();
+    double widest = 0;
+    for (const QString& line : lines) widest = std::max(widest, QFontMetricsF(base).horizontalAdvance(line));
+    QFont font = base;
+    if (widest > width) font.setPointSizeF(base.pointSizeF() * std::max(kSmallestLabelScale, width / widest));
+    QStringList shown;
+    for (const QString& line : lines) shown << QFontMetricsF(font).elidedText(line, Qt::ElideRight, width);
+    title->setFont(font);
+    title->setText(shown.join('\n'));
+    title->setProperty("pl_shownText", title->text());
+    title->setProperty("pl_shownFont", font);
+}
+} // namespace
+
+void placeLegendRow(QCustomPlot* plot, QCPLegend* legend, int row) {
+    for (QCPAxisRect* rect : plot->axisRects())
+        if (rect->insetLayout()->elements(false).contains(legend)) rect->insetLayout()->take(legend);
+    QCPLayoutGrid* layout = plot->plotLayout();
+    if (row < layout->rowCount() && layout->hasElement(row, 0)) layout->insertRow(row);
+    layout->addElement(row, 0, legend);
+    layout->setRowStretchFactor(row, kLegendRowStretch);
+    legend->setLayer("legend");
+    legend->setBorderPen(Qt::NoPen);
+    legend->setBrush(Qt::NoBrush);
+    legend->setRowSpacing(0);
+    legend->setColumnSpacing(12);
+    legend->setIconSize(20, 10); // short line samples leave the text more of the width
+    legend->setVisible(true);
+}
+
+void keepDataReadable(QCustomPlot* plot) {
+    QObject::connect(plot, &QCustomPlot::afterLayout, plot, [plot] {
+        bool again = false;
+        QCPLayoutGrid* layout = plot->plotLayout();
+        const int panels = std::max<int>(1, static_cast<int>(plot->axisRects().size()));
+        for (int i = 0; i < layout->elementCount(); ++i)
+            if (auto* legend = qobject_cast<QCPLegend*>(layout->elementAt(i)))
+                again |= fitLegend(
+                    legend, plot->viewport().width() - legend->margins().left() - legend->margins().right(),
+                    plot->viewport().height() / panels);
+        for (QCPAxisRect* rect : plot->axisRects()) {
+            fitValueLabel(rect);
+            fitTickCounts(rect);
+        }
+        for (int i = 0; i < layout->elementCount(); ++i)
+            if (auto* title = qobject_cast<QCPTextElement*>(layout->elementAt(i)))
+                fitTitle(title, plot->viewport().width());
+        if (again) plot->replot(QCustomPlot::rpQueuedReplot);
+    });
+}
+
+} // namespace pl::ui

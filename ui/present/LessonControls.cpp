@@ -1,0 +1,319 @@
+// LessonControls: built anew for each scene from what its parameters offer, so a scene without a piston
+// or gravity simply shows fewer controls. Sizes come from a style sheet: large handles for a projector.
+#include "LessonControls.h"
+
+#include "SimulationController.h"
+#include "common/SceneTools.h"
+
+#include <QGridLayout>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QPushButton>
+#include <QSlider>
+#include <QTimer>
+#include <QVBoxLayout>
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace pl::ui {
+
+namespace {
+constexpr int kSliderSteps = 100;
+constexpr int kPourIntervalMs = 150;   // one small block of fluid per interval while Pour is held
+constexpr double kPourFraction = 0.04; // side of the poured block, as a fraction of the tank width
+constexpr double kCountRange = 2.0;    // the particle slider reaches twice the scene's starting N
+constexpr double kMaxPacking = 0.4;    // … but never past 40 % of the box covered by disks
+constexpr double kGravityScale = 5.0;  // gas: the strongest gravity makes the scale height H / 5
+constexpr double kFluidGravity = 9.8;  // fluid: the seed's g; the slider reaches twice it
+
+const char* kStyle = "QPushButton { padding: 10px 8px; }"
+                     "QPushButton:checked { background: #2a5aaa; color: white; }"
+                     "QSlider { min-height: 44px; }"
+                     "QSlider::groove:horizontal { height: 12px; background: #c8c8c8; border-radius: 6px; }"
+                     "QSlider::handle:horizontal { width: 40px; margin: -14px 0; border-radius: 20px;"
+                     " background: #2a5aaa; }";
+
+double number(const ParamValues& values, const std::string& key, double fallback) {
+    const auto it = values.find(key);
+    if (it == values.end()) return fallback;
+    if (const auto* d = std::get_if<double>(&it->second)) return *d;
+    return fallback;
+}
+
+// The latest finite value of a series column, or fallback.
+double latest(SimulationController* controller, const QString& column, double fallback) {
+    const SeriesStore* store = controller->series();
+    const int c = store->column(column);
+    if (c < 0 || store->rows() == 0) return fallback;
+    const double v = store->table().row(store->rows() - 1)[static_cast<std::size_t>(c)];
+    return std::isfinite(v) ? v : fallback;
+}
+} // namespace
+
+LessonControls::LessonControls(SimulationController* controller, QWidget* parent)
+    : QWidget(parent), controller_(controller), layout_(new QVBoxLayout(this)), pour_(new QTimer(this)) {
+    setObjectName("lessonControls");
+    setStyleSheet(kStyle);
+    layout_->setContentsMargins(0, 0, 0, 0);
+    pour_->setInterval(kPourIntervalMs);
+    connect(pour_, &QTimer::timeout, this, &LessonControls::pourOnce);
+    connect(controller, &SimulationController::modelReplaced, this, &LessonControls::rebuild);
+    connect(controller, &SimulationController::parametersChanged, this, &LessonControls::syncState);
+    connect(controller, &SimulationController::frameAdvanced, this, &LessonControls::syncState);
+    connect(controller, &SimulationController::runningChanged, this, &LessonControls::syncState);
+    rebuild();
+}
+
+void LessonControls::rebuild() {
+    pour_->stop();
+    delete body_;
+    body_ = new QWidget(this);
+    grid_ = new QGridLayout(body_);
+    grid_->setContentsMargins(0, 0, 0, 0);
+    grid_->setHorizontalSpacing(16);
+    grid_->setColumnStretch(0, 1);
+    grid_->setColumnStretch(1, 1);
+    layout_->addWidget(body_);
+    run_ = nullptr;
+    count_ = nullptr;
+    pistonSwitch_ = nullptr;
+    std::fill(std::begin(pistonButtons_), std::end(pistonButtons_), nullptr);
+    addRunRow();
+    if (const Model* model = controller_->model()) {
+        if (model->kind() == "gas") addGasControls();
+        if (model->kind() == "fluid") addFluidControls();
+        if (model->kind() == "dsmc") addDsmcControls();
+    }
+    message_ = new QLabel(body_);
+    message_->setWordWrap(true);
+    grid_->addWidget(message_, grid_->rowCount(), 0, 1, 2);
+    syncState();
+}
+
+QPushButton* LessonControls::addButton(QLayout* row, const QString& text, const QString& objectName) {
+    auto* button = new QPushButton(text, body_);
+    button->setObjectName(objectName);
+    button->setFocusPolicy(Qt::NoFocus); // the keys stay with the viewport
+    row->addWidget(button);
+    return button;
+}
+
+QVBoxLayout* LessonControls::addGroup(int row, int column, int span) {
+    auto* group = new QVBoxLayout;
+    group->setSpacing(2);
+    grid_->addLayout(group, row, column, 1, span);
+    return group;
+}
+
+QSlider* LessonControls::addSlider(QVBoxLayout* group, const QString& title, QLabel** valueLabel) {
+    auto* header = new QHBoxLayout;
+    auto* name = new QLabel(title, body_);
+    name->setWordWrap(true); // a narrow panel wraps the title instead of widening itself
+    header->addWidget(name, 1);
+    auto* value = new QLabel(body_);
+    header->addWidget(value);
+    if (valueLabel) *valueLabel = value;
+    auto* slider = new QSlider(Qt::Horizontal, body_);
+    slider->setFocusPolicy(Qt::NoFocus);
+    group->addLayout(header);
+    group->addWidget(slider);
+    return slider;
+}
+
+void LessonControls::addRunRow() {
+    auto* row = new QHBoxLayout;
+    addGroup(0, 0, 2)->addLayout(row);
+    run_ = addButton(row, tr("Run"), "lessonRun");
+    connect(run_, &QPushButton::clicked, controller_, &SimulationController::togglePlay);
+    connect(addButton(row, tr("Reset"), "lessonReset"), &QPushButton::clicked, controller_,
+            &SimulationController::reset);
+}
+
+void LessonControls::addGasControls() {
+    // Temperature: held to a side it heats or cools at up to ±3 % per frame, and springs back, as the
+    // tool bar's Heat slider; the readout shows where kT has got to.
+    QSlider* heat = addSlider(addGroup(1, 0), tr("◀ Cool   Heat ▶"), nullptr);
+    heat->setObjectName("lessonHeat");
+    heat->setRange(-kSliderSteps, kSliderSteps);
+    connect(heat, &QSlider::valueChanged, controller_,
+            [this](int v) { controller_->setHeatRate(static_cast<double>(v) / kSliderSteps); });
+    connect(heat, &QSlider::sliderReleased, heat, [heat] { heat->setValue(0); });
+
+    // Particle number: the experiment restarts with N disks at the temperature it has now, so the class
+    // compares pressures at equal kT. Spawning could only add disks, and is refused where they overlap.
+    const ParamValues values = controller_->model()->params();
+    const double na = number(values, "count_a", 0), nb = number(values, "count_b", 0);
+    const double total = std::max(1.0, na + nb);
+    const double da = number(values, "diameter_a", 0), db = number(values, "diameter_b", 0);
+    const double meanDiscArea = std::numbers::pi / 4 * (na * da * da + nb * db * db) / total;
+    const double area = number(values, "box_width", 1) * number(values, "box_height", 1);
+    const double packed = meanDiscArea > 0 ? kMaxPacking * area / meanDiscArea : kCountRange * total;
+    const double cap = number(values, "max_particles", kCountRange * total);
+    const int top = static_cast<int>(std::max(total, std::min({kCountRange * total, packed, cap})));
+    count_ = addSlider(addGroup(1, 1), tr("Particles (restart at this kT)"), &countLabel_);
+    count_->setObjectName("lessonCount");
+    count_->setRange(std::max(1, top / 50), top);
+    count_->setValue(static_cast<int>(total));
+    countLabel_->setText(QString::number(static_cast<int>(total)));
+    connect(count_, &QSlider::valueChanged, countLabel_,
+            [this](int n) { countLabel_->setText(QString::number(n)); });
+    connect(count_, &QSlider::sliderReleased, this, [this] { applyParticleCount(count_->value()); });
+    connect(count_, &QSlider::actionTriggered, this, [this](int action) {
+        if (action != QAbstractSlider::SliderMove) // a click on the groove: applies at once
+            QTimer::singleShot(0, this, [this] { applyParticleCount(count_->value()); });
+    });
+
+    addPistonGroup(addGroup(2, 0, 2), addGroup(3, 1));
+    const double kT = latest(controller_, "kT", 0.5);
+    const double mass = number(values, "mass_a", 1.0);
+    const double height = number(values, "box_height", 1.0);
+    addGravitySlider(addGroup(3, 0), "gravity",
+                     std::max(kGravityScale * kT / (mass * height), 2 * number(values, "gravity", 0)), 1.0);
+}
+
+void LessonControls::addPistonGroup(QVBoxLayout* drive, QVBoxLayout* toggle) {
+    auto* name = new QLabel(tr("Volume"), body_);
+    toggle->addWidget(name);
+    auto* toggleRow = new QHBoxLayout;
+    toggle->addLayout(toggleRow);
+    pistonSwitch_ = addButton(toggleRow, tr("Piston"), "lessonPistonSwitch");
+    pistonSwitch_->setCheckable(true);
+    pistonSwitch_->setToolTip(tr("Replace the right wall by a piston"));
+    connect(pistonSwitch_, &QPushButton::toggled, this, [this](bool on) {
+        const QString problem = controller_->setParameters({{"piston_enabled", on}});
+        if (!problem.isEmpty()) say(problem);
+    });
+    auto* row = new QHBoxLayout;
+    drive->addLayout(row);
+    const QString texts[] = {tr("◀ Compress"), tr("Stop"), tr("Expand ▶")};
+    const char* names[] = {"lessonCompress", "lessonStop", "lessonExpand"};
+    for (int i = 0; i < 3; ++i) {
+        pistonButtons_[i] = addButton(row, texts[i], names[i]);
+        pistonButtons_[i]->setCheckable(true);
+        connect(pistonButtons_[i], &QPushButton::clicked, this, [this, direction = i - 1] {
+            Model* model = controller_->model();
+            if (!model || !model->tools() || !model->tools()->hasPiston()) return;
+            model->tools()->drivePiston(direction);
+            controller_->noteEdited();
+            syncState();
+        });
+    }
+}
+
+void LessonControls::addGravitySlider(QVBoxLayout* group, const QString& key, double maximum, double sign) {
+    QLabel* value = nullptr;
+    QSlider* slider = addSlider(group, tr("Gravity"), &value);
+    slider->setObjectName("lessonGravity");
+    slider->setRange(0, kSliderSteps);
+    const double now = std::abs(number(controller_->model()->params(), key.toStdString(), 0));
+    slider->setValue(static_cast<int>(std::lround(kSliderSteps * std::min(1.0, now / maximum))));
+    value->setText(QString::number(now, 'g', 3));
+    connect(slider, &QSlider::valueChanged, this, [this, key, maximum, sign, value](int v) {
+        const double g = maximum * v / kSliderSteps;
+        value->setText(QString::number(g, 'g', 3));
+        const QString problem = controller_->setParameters({{key.toStdString(), sign * g}});
+        if (!problem.isEmpty()) say(problem);
+    });
+}
+
+void LessonControls::addFluidControls() {
+    auto* switches = new QHBoxLayout;
+    addGroup(1, 0)->addLayout(switches);
+    QPushButton* gravity = addButton(switches, tr("Gravity on"), "lessonGravitySwitch");
+    gravity->setCheckable(true);
+    gravity->setChecked(std::get<bool>(controller_->model()->params().at("gravity")));
+    connect(gravity, &QPushButton::toggled, this, [this](bool on) {
+        const QString problem = controller_->setParameters({{"gravity", on}});
+        if (!problem.isEmpty()) say(problem);
+    });
+    // Pour: held, it drops small blocks of fluid into the middle of the tank, as a tap would.
+    auto* pouring = new QHBoxLayout;
+    addGroup(1, 1)->addLayout(pouring);
+    QPushButton* pour = addButton(pouring, tr("Pour (hold)"), "lessonPour");
+    connect(pour, &QPushButton::pressed, this, [this] {
+        pourOnce();
+        pour_->start();
+    });
+    connect(pour, &QPushButton::released, pour_, &QTimer::stop);
+    addGravitySlider(addGroup(2, 0), "gravity_y", 2 * kFluidGravity, -1.0);
+    auto* mouseRow = new QHBoxLayout;
+    QVBoxLayout* mouseGroup = addGroup(2, 1);
+    mouseGroup->addStretch(1);
+    mouseGroup->addLayout(mouseRow);
+    QPushButton* mouse = addButton(mouseRow, tr("Spawn tool"), "lessonSpawnTool");
+    mouse->setToolTip(tr("Pour where you like: drag a rectangle in the tank to fill it with fluid"));
+    connect(mouse, &QPushButton::clicked, this, [this] {
+        emit toolRequested(ViewportTool::Spawn);
+        say(tr("Drag a rectangle in the tank to fill it with fluid; a click adds a drop."));
+    });
+}
+
+void LessonControls::addDsmcControls() {
+    QLabel* value = nullptr;
+    QSlider* speed = addSlider(addGroup(1, 0), tr("Steps per frame"), &value);
+    speed->setObjectName("lessonSpeed");
+    speed->setRange(1, 10);
+    speed->setValue(std::max(1, std::abs(controller_->stepsPerFrame())));
+    value->setText(QString::number(speed->value()));
+    connect(speed, &QSlider::valueChanged, this, [this, value](int n) {
+        value->setText(QString::number(n));
+        controller_->setStepsPerFrame(n);
+    });
+}
+
+void LessonControls::applyParticleCount(int total) {
+    Model* model = controller_->model();
+    if (!model) return;
+    const ParamValues values = model->params();
+    const double na = number(values, "count_a", 0), nb = number(values, "count_b", 0);
+    if (static_cast<int>(na + nb) == total) return;
+    const double fractionA = na + nb > 0 ? na / (na + nb) : 1.0;
+    const double a = std::round(fractionA * total);
+    const double kT = latest(controller_, "kT", number(values, "init_kT", 0.5));
+    const QString problem = controller_->setParameters({{"count_a", a},
+                                                        {"count_b", total - a},
+                                                        {"init_velocity", std::string("maxwell-boltzmann")},
+                                                        {"init_kT", kT}});
+    if (!problem.isEmpty()) {
+        say(problem);
+        return;
+    }
+    const bool wasRunning = controller_->isRunning();
+    controller_->reset();
+    if (wasRunning) controller_->play();
+    say(tr("Restarted with %1 particles at kT = %2.").arg(total).arg(kT, 0, 'g', 3));
+}
+
+void LessonControls::pourOnce() {
+    Model* model = controller_->model();
+    if (!model || !model->tools()) return;
+    const SceneView view = model->sceneView();
+    const double side = kPourFraction * (view.right - view.left);
+    const double x = 0.5 * (view.left + view.right), y = view.top - side;
+    say(QString::fromStdString(
+        model->tools()->spawnInRectangle(x - 0.5 * side, y - side, x + 0.5 * side, y)));
+    controller_->noteEdited();
+}
+
+void LessonControls::syncState() {
+    Model* model = controller_->model();
+    if (run_) run_->setText(controller_->isRunning() ? tr("Pause") : tr("Run"));
+    SceneTools* tools = model ? model->tools() : nullptr;
+    const bool piston = tools && tools->hasPiston();
+    if (pistonSwitch_) {
+        const QSignalBlocker block(pistonSwitch_);
+        pistonSwitch_->setChecked(piston);
+    }
+    for (int i = 0; i < 3; ++i)
+        if (pistonButtons_[i]) {
+            pistonButtons_[i]->setEnabled(piston);
+            pistonButtons_[i]->setChecked(piston && tools->pistonDirection() == i - 1);
+        }
+}
+
+void LessonControls::say(const QString& sentence) {
+    if (message_) message_->setText(sentence);
+}
+
+} // namespace pl::ui

@@ -1,0 +1,127 @@
+// PresentMode: what it hides it records first (QMainWindow::saveState holds docks and tool bars; the menu
+// and status bar and the window's state are kept beside it), and leaving puts exactly that back.
+#include "PresentMode.h"
+
+#include "PresentPanel.h"
+#include "SimulationController.h"
+
+#include <QDockWidget>
+#include <QEvent>
+#include <QMainWindow>
+#include <QMenu>
+#include <QMenuBar>
+#include <QScrollArea>
+#include <QShortcut>
+#include <QStatusBar>
+#include <QTimer>
+#include <QToolBar>
+#include <algorithm>
+
+namespace pl::ui {
+
+namespace {
+// Every action of a menu tree that has a key.
+void collectShortcutActions(const QList<QAction*>& actions, QList<QAction*>& out) {
+    for (QAction* action : actions) {
+        if (QMenu* menu = action->menu())
+            collectShortcutActions(menu->actions(), out);
+        else if (!action->shortcut().isEmpty())
+            out << action;
+    }
+}
+} // namespace
+
+PresentMode::PresentMode(QMainWindow* window, SimulationController* controller, QWidget* viewport)
+    : QObject(window), window_(window), controller_(controller), viewport_(viewport),
+      escape_(new QShortcut(QKeySequence(Qt::Key_Escape), window)) {
+    escape_->setEnabled(false);
+    connect(escape_, &QShortcut::activated, this, [this] { setActive(false); });
+    connect(controller, &SimulationController::modelReplaced, this, [this] {
+        if (isActive()) hideEverythingElse(); // the window shows a new scene's docks: not here
+    });
+}
+
+void PresentMode::setActive(bool on) {
+    if (on == isActive()) return;
+    on ? enter() : leave();
+    emit activeChanged(on);
+}
+
+void PresentMode::enter() {
+    QStatusBar* status = window_->findChild<QStatusBar*>(QString(), Qt::FindDirectChildrenOnly);
+    saved_ = {window_->saveState(), window_->saveGeometry(), window_->windowState(),
+              window_->menuWidget() && !window_->menuWidget()->isHidden(), status && !status->isHidden()};
+    panel_ = new PresentPanel(controller_);
+    connect(panel_, &PresentPanel::leaveRequested, this, [this] { setActive(false); });
+    connect(panel_, &PresentPanel::toolRequested, this, &PresentMode::toolRequested);
+    // A short window (1024 × 700) scrolls the panel rather than squeezing the viewport.
+    auto* scroll = new QScrollArea;
+    scroll->setWidgetResizable(true);
+    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setWidget(panel_);
+    dock_ = new QDockWidget(tr("Present"), window_);
+    dock_->setObjectName("presentDock");
+    dock_->setFeatures(QDockWidget::NoDockWidgetFeatures);
+    dock_->setTitleBarWidget(new QWidget(dock_)); // no title: the panel is part of the layout
+    dock_->setWidget(scroll);
+    window_->addDockWidget(Qt::RightDockWidgetArea, dock_);
+    hideEverythingElse();
+    // Without a menu bar its actions' keys would stop working: the window holds them meanwhile.
+    QList<QAction*> keyed;
+    if (auto* bar = qobject_cast<QMenuBar*>(window_->menuWidget()))
+        collectShortcutActions(bar->actions(), keyed);
+    borrowed_.clear();
+    for (QAction* action : std::as_const(keyed))
+        if (!window_->actions().contains(action)) {
+            window_->addAction(action);
+            borrowed_ << action;
+        }
+    if (window_->menuWidget()) window_->menuWidget()->hide();
+    if (status) status->hide();
+    escape_->setEnabled(true);
+    window_->installEventFilter(this);
+    window_->showFullScreen();
+    fitPanel();
+    QTimer::singleShot(0, this, &PresentMode::fitPanel); // again once full screen has taken effect
+    viewport_->setFocus(Qt::OtherFocusReason);
+}
+
+void PresentMode::hideEverythingElse() {
+    for (QDockWidget* dock : window_->findChildren<QDockWidget*>())
+        if (dock != dock_) dock->hide();
+    for (QToolBar* bar : window_->findChildren<QToolBar*>()) bar->hide();
+}
+
+void PresentMode::fitPanel() {
+    if (!dock_) return;
+    const int width = std::min(kPanelMaxWidth, static_cast<int>(kPanelShare * window_->width()));
+    window_->resizeDocks({dock_}, {width}, Qt::Horizontal);
+}
+
+bool PresentMode::eventFilter(QObject* watched, QEvent* event) {
+    if (watched == window_ && event->type() == QEvent::Resize && dock_)
+        QTimer::singleShot(0, this, &PresentMode::fitPanel);
+    return QObject::eventFilter(watched, event);
+}
+
+void PresentMode::leave() {
+    window_->removeEventFilter(this);
+    escape_->setEnabled(false);
+    window_->removeDockWidget(dock_);
+    dock_->deleteLater();
+    dock_ = nullptr;
+    panel_ = nullptr;
+    for (QAction* action : std::as_const(borrowed_)) window_->removeAction(action);
+    borrowed_.clear();
+    if (window_->menuWidget()) window_->menuWidget()->setVisible(saved_.menuBar);
+    if (auto* status = window_->findChild<QStatusBar*>(QString(), Qt::FindDirectChildrenOnly))
+        status->setVisible(saved_.statusBar);
+    window_->setWindowState(saved_.windowState);
+    if (!(saved_.windowState & (Qt::WindowFullScreen | Qt::WindowMaximized)))
+        window_->restoreGeometry(saved_.geometry);
+    window_->restoreState(saved_.state);
+    viewport_->setFocus(Qt::OtherFocusReason);
+}
+
+} // namespace pl::ui

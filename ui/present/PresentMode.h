@@ -1,0 +1,63 @@
+// Present mode (View → Present, F5, --present): the window goes full screen with only the viewport and
+// one side panel (readouts, a plot, the lesson's controls); Escape or F5 brings back exactly the layout
+// it replaced: docks, tool bars, menu and status bar, window state and geometry.
+#pragma once
+
+#include "viewport/ViewportCore.h"
+
+#include <QByteArray>
+#include <QList>
+#include <QObject>
+
+class QAction;
+class QDockWidget;
+class QMainWindow;
+class QShortcut;
+
+namespace pl::ui {
+
+class PresentPanel;
+class SimulationController;
+
+class PresentMode : public QObject {
+    Q_OBJECT
+public:
+    // viewport: the window's central widget, which takes the keyboard focus while presenting.
+    PresentMode(QMainWindow* window, SimulationController* controller, QWidget* viewport);
+
+    bool isActive() const { return dock_ != nullptr; }
+    void setActive(bool on);
+    PresentPanel* panel() const { return panel_; }
+    // The panel's share of the window's width, up to kPanelMaxWidth px; the viewport keeps the rest
+    // (two thirds of the window or more, so well over half its area).
+    static constexpr double kPanelShare = 0.34;
+    static constexpr int kPanelMaxWidth = 560;
+
+signals:
+    void activeChanged(bool on);
+    void toolRequested(ViewportTool tool); // a lesson control asks for a viewport tool
+
+protected:
+    bool eventFilter(QObject* watched, QEvent* event) override; // keeps the panel's share on resizes
+
+private:
+    void enter();
+    void leave();
+    void fitPanel();
+    void hideEverythingElse(); // also after a scene change, which may bring docks back
+
+    QMainWindow* window_;
+    SimulationController* controller_;
+    QWidget* viewport_;
+    QShortcut* escape_;
+    QDockWidget* dock_ = nullptr;
+    PresentPanel* panel_ = nullptr;
+    struct Saved {
+        QByteArray state, geometry;
+        Qt::WindowStates windowState;
+        bool menuBar = true, statusBar = true;
+    } saved_;
+    QList<QAction*> borrowed_; // menu actions added to the window so their keys work without the menu bar
+};
+
+} // namespace pl::ui

@@ -1,0 +1,107 @@
+// PresentReadouts: a two-column board of big numbers; a readout whose column the model lacks is left out,
+// one that is not (yet) finite shows a dash rather than "nan".
+#include "PresentReadouts.h"
+
+#include "SimulationController.h"
+
+#include <QEvent>
+#include <QGridLayout>
+#include <QLabel>
+#include <cmath>
+
+namespace pl::ui {
+
+namespace {
+constexpr double kValueFontScale = 1.7; // the numbers are read from the back of a classroom
+constexpr int kColumns = 2;
+
+QFont valueFont(const QFont& base) {
+    QFont big = base;
+    big.setPointSizeF(base.pointSizeF() * kValueFontScale);
+    big.setBold(true);
+    return big;
+}
+} // namespace
+
+std::vector<ReadoutSpec> readoutSpecsFor(const QString& kind) {
+    if (kind == QLatin1String("gas"))
+        return {{"particles", QObject::tr("N"), {}, 1.0, 'f', 0},
+                {"kT", QObject::tr("kT"), {}, 1.0, 'g', 3},
+                {"pressure_wall", QObject::tr("P"), {}, 1.0, 'g', 3},
+                {"time", QObject::tr("t"), {}, 1.0, 'f', 2}};
+    if (kind == QLatin1String("dsmc"))
+        return {{"Tx", QObject::tr("Tₓ"), QObject::tr("K"), 1.0, 'f', 0},
+                {"T_perp", QObject::tr("T⊥"), QObject::tr("K"), 1.0, 'f', 0},
+                {"collisions_per_particle", QObject::tr("collisions per particle"), {}, 1.0, 'f', 2},
+                {"step", QObject::tr("step"), {}, 1.0, 'f', 0}};
+    if (kind == QLatin1String("fluid"))
+        return {{"particles", QObject::tr("N"), {}, 1.0, 'f', 0},
+                {"density_error_mean", QObject::tr("density error"), QObject::tr("%"), 100.0, 'f', 2},
+                {"density_error_max", QObject::tr("worst density error"), QObject::tr("%"), 100.0, 'f', 1},
+                {"time", QObject::tr("t"), QObject::tr("s"), 1.0, 'f', 2}};
+    return {};
+}
+
+PresentReadouts::PresentReadouts(SimulationController* controller, QWidget* parent)
+    : QWidget(parent), controller_(controller), grid_(new QGridLayout(this)) {
+    setObjectName("presentReadouts");
+    grid_->setContentsMargins(4, 4, 4, 4);
+    grid_->setHorizontalSpacing(18);
+    connect(controller->series(), &SeriesStore::restarted, this, &PresentReadouts::rebuild);
+    connect(controller->series(), &SeriesStore::appended, this, &PresentReadouts::refresh);
+    rebuild();
+}
+
+void PresentReadouts::rebuild() {
+    for (const Shown& s : shown_) {
+        delete s.name;
+        delete s.value;
+    }
+    shown_.clear();
+    const Model* model = controller_->model();
+    if (!model) return;
+    const QFont big = valueFont(font());
+    int index = 0;
+    for (const ReadoutSpec& spec : readoutSpecsFor(QString::fromStdString(model->kind()))) {
+        const int column = controller_->series()->column(spec.column);
+        if (column < 0) continue;
+        auto* name = new QLabel(spec.name, this);
+        auto* value = new QLabel(this);
+        value->setObjectName("readout_" + spec.column);
+        value->setFont(big);
+        value->setTextInteractionFlags(Qt::NoTextInteraction);
+        const int row = 2 * (index / kColumns), col = index % kColumns;
+        grid_->addWidget(name, row, col);
+        grid_->addWidget(value, row + 1, col);
+        shown_.push_back({spec, column, name, value});
+        ++index;
+    }
+    refresh();
+}
+
+QString PresentReadouts::valueText(const ReadoutSpec& spec, int column) const {
+    const TimeSeries& table = controller_->series()->table();
+    if (table.rows() == 0) return QStringLiteral("—");
+    const double v = table.row(table.rows() - 1)[static_cast<std::size_t>(column)] * spec.scale;
+    if (!std::isfinite(v)) return QStringLiteral("—");
+    const QString number = QString::number(v, spec.format, spec.precision);
+    return spec.unit.isEmpty() ? number : QStringLiteral("%1 %2").arg(number, spec.unit);
+}
+
+void PresentReadouts::refresh() {
+    for (const Shown& s : shown_) s.value->setText(valueText(s.spec, s.column));
+}
+
+void PresentReadouts::changeEvent(QEvent* event) {
+    QWidget::changeEvent(event);
+    if (event->type() == QEvent::FontChange)
+        for (const Shown& s : shown_) s.value->setFont(valueFont(font()));
+}
+
+QStringList PresentReadouts::texts() const {
+    QStringList out;
+    for (const Shown& s : shown_) out << QStringLiteral("%1 = %2").arg(s.spec.name, s.value->text());
+    return out;
+}
+
+} // namespace pl::ui

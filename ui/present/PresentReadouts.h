@@ -1,0 +1,56 @@
+// Large readouts for present mode: the few numbers a lesson is about (gas: N, kT, P, t; DSMC: T_x, T_⊥,
+// collisions; fluid: N, density error), read from the controller's series store after every sample.
+#pragma once
+
+#include <QString>
+#include <QStringList>
+#include <QWidget>
+#include <vector>
+
+class QGridLayout;
+class QLabel;
+
+namespace pl::ui {
+
+class SimulationController;
+
+// One number on the board: a series column, how it is named and printed.
+struct ReadoutSpec {
+    QString column; // the model's series column
+    QString name;   // what the class reads, e.g. "kT"
+    QString unit;   // after the number; empty for model units
+    double scale = 1.0;
+    char format = 'g';
+    int precision = 3;
+};
+
+// The readouts of a scene kind ("gas", "dsmc", "fluid"); empty for an unknown kind.
+std::vector<ReadoutSpec> readoutSpecsFor(const QString& kind);
+
+class PresentReadouts : public QWidget {
+    Q_OBJECT
+public:
+    explicit PresentReadouts(SimulationController* controller, QWidget* parent = nullptr);
+    // "name = value unit" per readout, as shown (for tests and the accessible description).
+    QStringList texts() const;
+
+protected:
+    void changeEvent(QEvent* event) override; // the numbers scale with the panel's font
+
+private:
+    void rebuild(); // a new table: the scene (and so the readouts) may have changed
+    void refresh(); // a new row
+    QString valueText(const ReadoutSpec& spec, int column) const;
+
+    SimulationController* controller_;
+    QGridLayout* grid_;
+    struct Shown {
+        ReadoutSpec spec;
+        int column;
+        QLabel* name;
+        QLabel* value;
+    };
+    std::vector<Shown> shown_;
+};
+
+} // namespace pl::ui
