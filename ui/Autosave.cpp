@@ -43,7 +43,8 @@ QString Autosave::directory() {
 }
 
 QString Autosave::path() const {
-    return QDir(directory()).filePath(kPrefix + QString::number(QCoreApplication::applicationPid()) + ".json");
+    return QDir(directory())
+        .filePath(kPrefix + QString::number(QCoreApplication::applicationPid()) + ".json");
 }
 
 QString Autosave::saveNow() {
@@ -82,7 +83,8 @@ bool Autosave::offerRestore() {
     bool restored = false;
     if (answer == QMessageBox::Yes) {
         try {
-            const Snapshot snapshot = readSnapshotFile(newest.absoluteFilePath().toStdString(), specsForModel);
+            const Snapshot snapshot =
+                readSnapshotFile(newest.absoluteFilePath().toStdString(), specsForModel);
             restored = document_->restore(snapshot);
         } catch (const std::exception& e) {
             QMessageBox::warning(parent_, tr("Cannot restore the experiment"), QString::fromUtf8(e.what()));

@@ -36,6 +36,8 @@ QString SimulationController::load(const Preset& preset, const StateRecord* stat
     model_ = std::move(next.model);
     importedFrom_.clear();
     if (!next.message.empty()) emit notice(QString::fromStdString(next.message));
+    if (const std::string warning = model_->accuracyWarning(); !warning.empty())
+        emit notice(tr("Warning: %1").arg(QString::fromStdString(warning)));
     pending_.clear();
     if (stepsPerFrame_ < 0 && !model_->reversible()) setStepsPerFrame(-stepsPerFrame_);
     const auto values = model_->params();
@@ -186,7 +188,9 @@ void SimulationController::restartSeries() {
 }
 
 void SimulationController::sample() {
-    if (model_) series_.append(model_->sampleSeries());
+    if (!model_) return;
+    model_->checkHealthNow(); // no row of an exploded state reaches the plots
+    if (!model_->failure()) series_.append(model_->sampleSeries());
 }
 
 void SimulationController::advanceFrame() {

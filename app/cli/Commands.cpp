@@ -1,6 +1,7 @@
 // Implementation of the CLI subcommands on top of the model catalog.
 #include "Commands.h"
 #include "RunSupport.h"
+#include "common/Snapshot.h"
 
 #include "catalog/ModelCatalog.h"
 #include "common/AtomicFile.h"
@@ -35,14 +36,27 @@ void setThreads(int threads) {
     if (threads > 0) omp_set_num_threads(threads);
 }
 
-// The model on the asked backend; a backend that cannot be had is reported on stderr, not fatal.
+// The model on the asked backend; a backend that cannot be had is reported on stderr, not fatal. A
+// snapshot file continues where it was taken, so it takes no --set or --seed (they would restart it).
 std::unique_ptr<Model> prepare(const std::string& name, const std::vector<std::string>& sets,
                                std::optional<std::uint64_t> seed, const std::string& backend) {
-    Preset preset = loadPreset(name);
-    applySets(preset, sets);
-    if (seed) preset.seed = *seed;
-    gl::BackendChoice choice = gl::createModel(preset.model, gl::backendFromName(backend), &preset);
+    Snapshot snapshot;
+    const bool continues = isSnapshotFile(name);
+    if (continues) {
+        if (!sets.empty() || seed)
+            throw std::invalid_argument("'" + name +
+                                        "' is a snapshot: it continues as it was saved, without --set or "
+                                        "--seed (change parameters in a preset instead)");
+        snapshot = readSnapshotFile(name, specsForModel);
+    } else {
+        snapshot.preset = loadPreset(name);
+        applySets(snapshot.preset, sets);
+        if (seed) snapshot.preset.seed = *seed;
+    }
+    gl::BackendChoice choice =
+        gl::createModel(snapshot.preset.model, gl::backendFromName(backend), &snapshot.preset);
     if (!choice.message.empty()) std::cerr << "particlelab-cli: " << choice.message << '\n';
+    if (continues) choice.model->restoreState(snapshot.state);
     return std::move(choice.model);
 }
 
@@ -129,7 +143,7 @@ namespace {
 // Every file a run writes is checked before it starts: a long run never ends in an unwritable path.
 void checkRunOutputs(const RunOptions& options) {
     for (const std::string* path :
-         {&options.out, &options.histogram, &options.dumpInitial, &options.dumpFinal})
+         {&options.out, &options.histogram, &options.dumpInitial, &options.dumpFinal, &options.snapshot})
         if (!path->empty()) checkOutputPath(*path);
 }
 
@@ -186,6 +200,8 @@ int runSimulation(const RunOptions& options) {
         // Everything measured so far is kept even when the model failed or the run was stopped.
         writeText(options.histogram, [&] { return histogramsCsv(*model); });
         writeText(options.dumpFinal, [&] { return particlesCsv(*model); });
+        writeText(options.snapshot,
+                  [&] { return serializeSnapshot(takeSnapshot(*model), model->paramSpecs()); });
     } catch (const FileError& e) {
         std::cerr << "particlelab-cli: " << e.what() << "\n";
         return kCannotWrite;

@@ -49,6 +49,10 @@ int main(int argc, char** argv) {
         ->check(fileName());
     runCmd->add_option("--dump-final", run.dumpFinal, "Final particles CSV (id,species,x,y,vx,vy)")
         ->check(fileName());
+    runCmd
+        ->add_option("--snapshot", run.snapshot,
+                     "Full state at the end (also when stopped); `run FILE` continues from it exactly")
+        ->check(fileName());
     runCmd->add_flag("--quiet", run.quiet, "No progress line");
     runCmd
         ->add_option("--backend", run.backend,

@@ -56,7 +56,8 @@ Snapshot parseSnapshot(std::string_view json, const SpecLookup& specsFor, const 
     if (!root.is_object() || !root.contains("snapshot_schema"))
         throw PresetError("snapshot_schema", sourceName + ": not a snapshot (no snapshot_schema)");
     if (root["snapshot_schema"] != Snapshot::kSchema)
-        throw PresetError("snapshot_schema", sourceName + ": snapshot_schema " + root["snapshot_schema"].dump() +
+        throw PresetError("snapshot_schema", sourceName + ": snapshot_schema " +
+                                                 root["snapshot_schema"].dump() +
                                                  " is not supported (this version reads " +
                                                  std::to_string(Snapshot::kSchema) + ")");
     if (!root.contains("preset") || !root["preset"].is_object())
@@ -70,7 +71,8 @@ Snapshot parseSnapshot(std::string_view json, const SpecLookup& specsFor, const 
     for (const auto& [key, value] : state["scalars"].items())
         s.state.scalars[key] = numberOf(value, "state." + key, sourceName);
     for (const auto& [key, values] : state["arrays"].items()) {
-        if (!values.is_array()) throw PresetError("state." + key, sourceName + ": 'state." + key + "' must be a list");
+        if (!values.is_array())
+            throw PresetError("state." + key, sourceName + ": 'state." + key + "' must be a list");
         std::vector<double>& out = s.state.arrays[key];
         out.reserve(values.size());
         for (const Json& v : values) out.push_back(numberOf(v, "state." + key, sourceName));

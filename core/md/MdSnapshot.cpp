@@ -35,7 +35,8 @@ StateRecord MdModel::saveState() const {
     r.put("wall_impulse", state_.wallImpulse);
     r.put("contacts_begun", state_.contactsBegun);
     std::vector<double> window;
-    for (const WallSample& w : wallWindow_) window.insert(window.end(), {w.impulse, w.duration, w.perimeterTime});
+    for (const WallSample& w : wallWindow_)
+        window.insert(window.end(), {w.impulse, w.duration, w.perimeterTime});
     r.put("wall_window", window);
     const NeighbourList::Contents list = neighbours_.contents();
     r.put("neighbours_valid", list.valid ? 1.0 : 0.0);
@@ -76,10 +77,14 @@ void MdModel::restoreState(const StateRecord& r) {
     list.payload = r.array<std::uint8_t>("neighbours_payload", list.entries.size());
     list.builtX = r.array<double>("neighbours_built_x");
     list.builtY = r.array<double>("neighbours_built_y", list.builtX.size());
-    if (list.valid && (list.offsets.size() != n + 1 || list.builtX.size() != n || list.offsets.back() != list.entries.size()))
-        throw PresetError("state.neighbours_offsets", "the snapshot's neighbour list does not fit its particles");
+    if (list.valid && (list.offsets.size() != n + 1 || list.builtX.size() != n ||
+                       list.offsets.back() != list.entries.size()))
+        throw PresetError("state.neighbours_offsets",
+                          "the snapshot's neighbour list does not fit its particles");
     for (const std::uint32_t j : list.entries)
-        if (j >= n) throw PresetError("state.neighbours_entries", "the snapshot's neighbour list names a missing disk");
+        if (j >= n)
+            throw PresetError("state.neighbours_entries",
+                              "the snapshot's neighbour list names a missing disk");
     const std::vector<double> window = r.array<double>("wall_window");
     if (window.size() % 3 != 0) throw PresetError("state.wall_window", "state.wall_window must hold triples");
 
@@ -98,7 +103,8 @@ void MdModel::restoreState(const StateRecord& r) {
     state_ = std::move(s);
     neighbours_.restore(std::move(list));
     wallWindow_.clear();
-    for (std::size_t k = 0; k < window.size(); k += 3) wallWindow_.push_back({window[k], window[k + 1], window[k + 2]});
+    for (std::size_t k = 0; k < window.size(); k += 3)
+        wallWindow_.push_back({window[k], window[k + 1], window[k + 2]});
     failure_.reset();
     escaped_ = false;
     obstacleDrive_.clear();

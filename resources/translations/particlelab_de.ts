@@ -2513,6 +2513,10 @@ Wirkt nach „Zurücksetzen“.</translation>
         <source>This run is read-only: open a preset to change parameters.</source>
         <translation>Dieser Lauf ist schreibgeschützt: Zum Ändern der Parameter eine Vorlage öffnen.</translation>
     </message>
+    <message>
+        <source>Warning: %1</source>
+        <translation>Warnung: %1</translation>
+    </message>
 </context>
 <context>
     <name>pl::ui::StabilityPage</name>

@@ -40,6 +40,26 @@ private slots:
             QVERIFY(r.out.contains(name));
     }
 
+    void aSnapshotContinuesTheRunExactly() {
+        // 200 steps, a snapshot, 100 more from it: the same disks, to the last bit, as 300 at once.
+        QTemporaryDir dir;
+        const QString snapshot = dir.filePath("s.json"), resumed = dir.filePath("b.csv"),
+                      straight = dir.filePath("c.csv");
+        auto r = cli({"run", "gas-classroom", "--steps", "200", "--snapshot", snapshot, "--quiet",
+                      "--backend", "cpu"});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        r = cli({"run", snapshot, "--steps", "100", "--dump-final", resumed, "--quiet", "--backend", "cpu"});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        r = cli({"run", "gas-classroom", "--steps", "300", "--dump-final", straight, "--quiet", "--backend",
+                 "cpu"});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        QCOMPARE(readLines(resumed), readLines(straight));
+        // A snapshot is continued as saved: changing it is refused with the reason.
+        r = cli({"run", snapshot, "--set", "dt=1e-4", "--steps", "5"});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains("is a snapshot"), qPrintable(r.err));
+    }
+
     void dsmcSeedRunsItsPlannedLengthAndPrintsTheSeedsColumns() {
         QTemporaryDir dir;
         const QString series = dir.filePath("s.csv"), hist = dir.filePath("h.csv");

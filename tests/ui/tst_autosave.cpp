@@ -36,7 +36,8 @@ private slots:
         QVERIFY(autosave->path().startsWith(state_.path()));
         QVERIFY(autosave->saveNow().isEmpty());
         const Snapshot saved = readSnapshotFile(autosave->path().toStdString(), specsForModel);
-        QCOMPARE(static_cast<std::int64_t>(saved.state.scalar("step")), window.controller()->model()->stepCount());
+        QCOMPARE(static_cast<std::int64_t>(saved.state.scalar("step")),
+                 window.controller()->model()->stepCount());
         QCOMPARE(saved.preset.model, std::string("gas"));
         // A process that still runs (this one) is never offered back.
         QVERIFY(!autosave->offerRestore());
@@ -55,8 +56,8 @@ private slots:
         app.setProcessEnvironment(env);
         app.start(PARTICLELAB_GUI, {"gas-classroom"});
         QVERIFY(app.waitForStarted());
-        const QString file = QDir(state_.path()).filePath(
-            QString("ParticleLab/autosave-%1.json").arg(app.processId()));
+        const QString file =
+            QDir(state_.path()).filePath(QString("ParticleLab/autosave-%1.json").arg(app.processId()));
         QElapsedTimer clock;
         clock.start();
         while (!QFile::exists(file) && clock.elapsed() < 30000) QTest::qWait(100);
@@ -64,8 +65,8 @@ private slots:
         QTest::qWait(200); // the rename is atomic: the file is complete once it exists
         app.kill();        // SIGKILL: no chance to clean up
         QVERIFY(app.waitForFinished());
-        const std::int64_t savedStep =
-            static_cast<std::int64_t>(readSnapshotFile(file.toStdString(), specsForModel).state.scalar("step"));
+        const std::int64_t savedStep = static_cast<std::int64_t>(
+            readSnapshotFile(file.toStdString(), specsForModel).state.scalar("step"));
         QVERIFY(savedStep > 0);
 
         ui::MainWindow window;
@@ -74,7 +75,8 @@ private slots:
         const bool restored = window.autosave()->offerRestore();
         QVERIFY2(restored, qPrintable(answerer.texts.join(" / ")));
         QCOMPARE(answerer.texts.size(), 1);
-        QVERIFY2(answerer.texts.first().contains("did not close normally"), qPrintable(answerer.texts.first()));
+        QVERIFY2(answerer.texts.first().contains("did not close normally"),
+                 qPrintable(answerer.texts.first()));
         const Model* model = window.controller()->model();
         QCOMPARE(model->kind(), std::string("gas"));
         QCOMPARE(model->stepCount(), savedStep);

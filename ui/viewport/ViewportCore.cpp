@@ -5,8 +5,8 @@
 #include "ViewportCore.h"
 
 #include "Palette.h"
-#include "i18n/Translations.h"
 #include "SimulationController.h"
+#include "i18n/Translations.h"
 
 #include <QMouseEvent>
 #include <QPainter>

@@ -225,7 +225,7 @@ private slots:
         MdModel dense;
         dense.reset(classroom);
         dense.drivePiston(-1);
-        for (int s = 0; s < 20000 && dense.pistonDirection() != 0; ++s) dense.step();
+        for (int s = 0; s < 60000 && dense.pistonDirection() != 0; ++s) dense.step();
         QCOMPARE(dense.pistonDirection(), 0);
         QVERIFY(!dense.failure());
         const double covered = 2500 * std::acos(-1.0) / 4 * 0.02 * 0.02;
