@@ -93,13 +93,9 @@ int exportDeck(const ScaleOutOptions& options, const std::string& dir, bool quie
     return kOk;
 }
 
-int writeImported(const std::string& dir, const ScaleOutOptions& options) {
-    scaleout::ImportedRun run;
-    try {
-        run = scaleout::importLammpsRun(dir);
-    } catch (const std::exception& e) {
-        return fail(kBadInput, e.what());
-    }
+// The histogram of an imported run's last state and its series, in the files `run` would write.
+template <class Imported>
+int writeImportedFiles(const Imported& run, const ScaleOutOptions& options, const std::string& summary) {
     try {
         if (!options.histogram.empty()) writeFileAtomically(options.histogram, histogramsCsv(*run.final));
     } catch (const FileError& e) {
@@ -107,10 +103,20 @@ int writeImported(const std::string& dir, const ScaleOutOptions& options) {
     }
     std::ostringstream csv;
     run.series.writeCsv(csv);
-    if (!options.quiet)
-        std::cerr << "particlelab-cli: read " << run.series.rows() << " thermo rows and " << run.frames
-                  << " dump frames from " << dir << "\n";
+    if (!options.quiet) std::cerr << "particlelab-cli: " << summary << "\n";
     return writeOrPrint(options.out, csv.str());
+}
+
+int writeImported(const std::string& dir, const ScaleOutOptions& options) {
+    scaleout::ImportedRun run;
+    try {
+        run = scaleout::importLammpsRun(dir);
+    } catch (const std::exception& e) {
+        return fail(kBadInput, e.what());
+    }
+    return writeImportedFiles(run, options,
+                              "read " + std::to_string(run.series.rows()) + " thermo rows and " +
+                                  std::to_string(run.frames) + " dump frames from " + dir);
 }
 
 } // namespace
@@ -158,16 +164,8 @@ int importSparta(const ScaleOutOptions& options) {
     } catch (const std::exception& e) {
         return fail(kBadInput, e.what());
     }
-    try {
-        if (!options.histogram.empty()) writeFileAtomically(options.histogram, histogramsCsv(*run.final));
-    } catch (const FileError& e) {
-        return fail(kCannotWrite, e.what());
-    }
-    std::ostringstream csv;
-    run.series.writeCsv(csv);
-    if (!options.quiet)
-        std::cerr << "particlelab-cli: read " << run.frames << " dumped steps from " << options.dir << "\n";
-    return writeOrPrint(options.out, csv.str());
+    return writeImportedFiles(run, options,
+                              "read " + std::to_string(run.frames) + " dumped steps from " + options.dir);
 }
 
 int runLammps(const ScaleOutOptions& options) {
