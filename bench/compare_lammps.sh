@@ -3,11 +3,16 @@
 # threads) and in Debian's LAMMPS (mpirun -np 2), from the identical initial state, and prints
 # particle-steps per second and their ratio (medians of REPEATS runs) as a Markdown table.
 # Usage: bench/compare_lammps.sh [REPEATS]   (after .ci/build.sh; installs lammps if missing)
+# CLI=path picks another particlelab-cli; BASELINE_CLI=path also times a second build (e.g. the one
+# before a change) in the same runs, interleaved, and adds its 2-thread column and ratio: on a shared
+# machine only figures taken side by side compare.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 repeats=${1:-3}
-cli=./build/app/particlelab-cli
+cli=${CLI:-./build/app/particlelab-cli}
+baseline=${BASELINE_CLI:-}
 [ -x "$cli" ] || { echo "build first: ./.ci/build.sh" >&2; exit 1; }
+[ -z "$baseline" ] || [ -x "$baseline" ] || { echo "BASELINE_CLI is not executable: $baseline" >&2; exit 1; }
 if ! command -v lmp >/dev/null; then
   [ "$(id -u)" -eq 0 ] && as_root=() || as_root=(sudo)
   DEBIAN_FRONTEND=noninteractive "${as_root[@]}" apt-get install -y -q --no-install-recommends lammps openmpi-bin
@@ -43,10 +48,12 @@ run_case() {
     lammps_ke=$(awk -v n=$n '/^ +400 / { printf "%.10g", $2 * n }' "$work/check.log")
     echo "kinetic energy after 400 steps ($name): ParticleLab $ours_ke, LAMMPS $lammps_ke" >&2
   fi
-  local ours1=() ours2=() lammps=()
+  local ours1=() ours2=() base2=() lammps=()
+  rate_of() { "$1" bench gas-seed "${sets[@]}" --steps "$steps" --repeats 1 --threads "$2" | sed 's/.*"p_steps_per_s":\([0-9.e+]*\).*/\1/'; }
   for r in $(seq "$repeats"); do
-    ours1+=("$("$cli" bench gas-seed "${sets[@]}" --steps "$steps" --repeats 1 --threads 1 | sed 's/.*"p_steps_per_s":\([0-9.e+]*\).*/\1/')")
-    ours2+=("$("$cli" bench gas-seed "${sets[@]}" --steps "$steps" --repeats 1 --threads 2 | sed 's/.*"p_steps_per_s":\([0-9.e+]*\).*/\1/')")
+    ours1+=("$(rate_of "$cli" 1)")
+    ours2+=("$(rate_of "$cli" 2)")
+    [ -z "$baseline" ] || base2+=("$(rate_of "$baseline" 2)")
     # LAMMPS at its best skin of three (0.3 d, 0.5 d, 1.0 d): the comparison favours it, not us.
     best=0
     for skin in 0.003 0.005 0.01; do
@@ -58,15 +65,24 @@ run_case() {
     done
     lammps+=("$best")
   done
-  local m1 m2 ml
+  local m1 m2 ml mb=0
   m1=$(printf '%s\n' "${ours1[@]}" | median)
   m2=$(printf '%s\n' "${ours2[@]}" | median)
   ml=$(printf '%s\n' "${lammps[@]}" | median)
-  awk -v name="$name" -v m1="$m1" -v m2="$m2" -v ml="$ml" -v s="$steps" 'BEGIN {
-    printf "| %s | %d | %.3g | %.3g | %.3g | %.2f |\n", name, s, m1, m2, ml, m2 / ml }'
+  [ -z "$baseline" ] || mb=$(printf '%s\n' "${base2[@]}" | median)
+  echo "raw ($name): 1 thread ${ours1[*]}; 2 threads ${ours2[*]}; LAMMPS ${lammps[*]}${baseline:+; baseline 2 threads ${base2[*]}}" >&2
+  awk -v name="$name" -v m1="$m1" -v m2="$m2" -v ml="$ml" -v mb="$mb" -v s="$steps" -v b="${baseline:+1}" 'BEGIN {
+    printf "| %s | %d | %.3g | %.3g | %.3g | %.2f |", name, s, m1, m2, ml, m2 / ml
+    if (b) printf " %.3g | %.2f |", mb, mb / ml
+    printf "\n" }'
 }
 
-echo "| system | steps | ParticleLab 1 thread | ParticleLab 2 threads | LAMMPS mpirun -np 2 | ratio (2 threads / LAMMPS) |"
-echo "|---|---|---|---|---|---|"
+if [ -z "$baseline" ]; then
+  echo "| system | steps | ParticleLab 1 thread | ParticleLab 2 threads | LAMMPS mpirun -np 2 | ratio (2 threads / LAMMPS) |"
+  echo "|---|---|---|---|---|---|"
+else
+  echo "| system | steps | ParticleLab 1 thread | ParticleLab 2 threads | LAMMPS mpirun -np 2 | ratio (2 threads / LAMMPS) | baseline 2 threads | baseline ratio |"
+  echo "|---|---|---|---|---|---|---|---|"
+fi
 run_case "gas-seed, 4096 disks" 4096 1 2000
 run_case "262144 disks, same area fraction" 262144 8 200

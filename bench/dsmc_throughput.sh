@@ -19,7 +19,7 @@ echo "dsmc-seed whole run (500 steps, 2000 particles): median $(printf '%s\n' "$
 "$cli" bench dsmc-seed --steps 500 --repeats "$repeats" --threads 1
 
 # 2. 200 000 particles at the seed's density (F_N scaled down 100×), ν Δt ≈ 0.04.
-big=(--set count_1=100000 --set count_2=100000 --set fn=5e6 --set run_steps=0)
+big=(--set count_a=100000 --set count_b=100000 --set fn=5e6 --set run_steps=0)
 line=$("$cli" bench dsmc-seed "${big[@]}" --steps 500 --repeats "$repeats" --threads 1)
 echo "$line"
 "$cli" run dsmc-seed "${big[@]}" --steps 500 --every 500 --quiet --out /tmp/dsmc-big.csv

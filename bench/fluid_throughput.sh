@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
 # Fluid throughput: the seed's tank filled to its 3000-particle cap, and the dam break, in steps/s and
 # particle-steps/s at 1 and 2 threads (median of the repeats). Usage: bench/fluid_throughput.sh [repeats]
-# (from a built tree)
+# (from a built tree). CLI=path runs another build (a copy kept from before a change, say) through the
+# same script, so before and after can be run alternately in one session on a shared machine.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-cli=build/app/particlelab-cli
+cli=${CLI:-build/app/particlelab-cli}
 repeats=${1:-5}
 
 report() { # name, then the bench arguments

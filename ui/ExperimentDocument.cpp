@@ -84,13 +84,13 @@ bool ExperimentDocument::saveSnapshotTo(const QString& path) {
 
 bool ExperimentDocument::newExperiment(const std::string& kind) {
     if (!maybeSave()) return false;
-    auto model = createModel(kind);
+    const ModelDescriptor* model = findModel(kind);
     if (!model) {
         showError(tr("Cannot create experiment"),
                   tr("Unknown scene '%1'.").arg(QString::fromStdString(kind)));
         return false;
     }
-    Preset preset = model->toPreset();
+    Preset preset = defaultPreset(*model);
     preset.name = "untitled";
     return adopt(preset, {}, tr("untitled"));
 }

@@ -31,6 +31,8 @@ public:
     std::size_t particleCount() const override { return state_->particleCount(); }
     std::optional<ModelFailure> failure() const override { return std::nullopt; }
     bool reversible() const override { return state_->reversible(); }
+    void setTimeDirection(int direction) override { state_->setTimeDirection(direction); }
+    int timeDirection() const override { return state_->timeDirection(); }
 
     std::vector<std::string> seriesColumns() const override { return state_->seriesColumns(); }
     std::vector<double> sampleSeries() override { return state_->sampleSeries(); }

@@ -115,11 +115,11 @@ void MainWindow::createDocks() {
     histogram_ = new DistributionPlot(controller_, "speedHistogram", "speed", this);
     histogram_->setMinimumSize(kPlotMinimum);
     QDockWidget* speed = addDock(histogram_, tr("Speed distribution"), "speedHistogramDock",
-                                 Qt::RightDockWidgetArea, {"gas", "dsmc"});
+                                 Qt::RightDockWidgetArea, distributionKinds("speedHistogram"));
     auto* vx = new DistributionPlot(controller_, "vxHistogram", "vx", this);
     vx->setMinimumSize(kPlotMinimum);
-    tabifyDockWidget(
-        speed, addDock(vx, tr("v_x distribution"), "vxHistogramDock", Qt::RightDockWidgetArea, {"dsmc"}));
+    tabifyDockWidget(speed, addDock(vx, tr("v_x distribution"), "vxHistogramDock", Qt::RightDockWidgetArea,
+                                    distributionKinds("vxHistogram")));
     speed->raise();
     QDockWidget* previous = nullptr;
     for (const SeriesPlotSpec& spec : seriesPlotSpecs()) {

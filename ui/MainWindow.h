@@ -73,7 +73,7 @@ private:
     QString writeLammpsDeck(const QString& dir, long long& steps); // exportToLammps; steps: the deck's run
     void createSceneBar();
     void createToolPalette();
-    void syncGravity(); // the gravity action follows the model's "gravity" switch
+    void syncGravity(); // the gravity action follows the model's "gravity_on" switch
     void createDocks();
     QDockWidget* addDock(QWidget* content, const QString& title, const QString& objectName,
                          Qt::DockWidgetArea area, const QStringList& kinds = {});

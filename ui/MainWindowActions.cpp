@@ -1,10 +1,10 @@
 // MainWindow's actions, menus and tool bars. Every toolbar action has a shortcut and a tooltip.
+#include "BenchmarkDialog.h"
 #include "ExperimentDocument.h"
 #include "MainWindow.h"
 #include "PreferencesDialog.h"
 #include "SimulationController.h"
 #include "catalog/ModelCatalog.h"
-#include "gpu/BenchmarkDialog.h"
 #include "i18n/Translations.h"
 #include "present/PresentMode.h"
 #include "viewport/ViewportCore.h"
@@ -43,7 +43,7 @@ QAction* menuAction(QMenu* menu, const QString& text, const QKeySequence& shortc
 void MainWindow::createActions() {
     QMenu* file = menuBar()->addMenu(tr("&File"));
     QMenu* newMenu = file->addMenu(tr("&New experiment"));
-    for (const ModelInfo& info : modelCatalog()) {
+    for (const ModelDescriptor& info : modelCatalog()) {
         QAction* action = newMenu->addAction(coreText(info.title));
         connect(action, &QAction::triggered, this,
                 [this, kind = info.kind] { document_->newExperiment(kind); });
@@ -194,16 +194,14 @@ void MainWindow::createSceneBar() {
     bar->setObjectName("experimentToolBar");
     bar->addWidget(new QLabel(tr(" Scene "), bar));
     scenePicker_ = new QComboBox(bar);
-    for (const ModelInfo& info : modelCatalog())
+    for (const ModelDescriptor& info : modelCatalog())
         scenePicker_->addItem(coreText(info.title), QString::fromStdString(info.kind));
     scenePicker_->setToolTip(tr("The kind of simulation: choosing one opens its first built-in experiment"));
     connect(scenePicker_, &QComboBox::activated, this, [this](int index) {
         const QString kind = scenePicker_->itemData(index).toString();
         if (controller_->model() && QString::fromStdString(controller_->model()->kind()) == kind) return;
-        for (const auto& p : builtinPresets())
-            if (QString::fromStdString(p.preset.model) == kind &&
-                document_->open(QString::fromStdString(p.name)))
-                return;
+        for (const BuiltinPreset* p : builtinPresetsOf(kind.toStdString()))
+            if (document_->open(QString::fromStdString(p->name))) return;
         modelChanged(); // cancelled or failed: show the scene that still runs
     });
     bar->addWidget(scenePicker_);
@@ -249,13 +247,13 @@ void MainWindow::createToolPalette() {
         connect(action, &QAction::triggered, this,
                 [this, tool = entry.tool] { viewportCore_->setTool(tool); });
     }
-    // The fluid seed's gravity toggle: shown for scenes whose parameters have a "gravity" switch.
+    // The gravity switch (the fluid seed's toggle): every scene with gravity has it as "gravity_on".
     gravity_ = menuAction(menu, tr("Gravity"), Qt::Key_G, tr("Switch gravity on or off"));
     gravity_->setObjectName("gravityAction");
     gravity_->setCheckable(true);
     bar->addAction(gravity_);
     connect(gravity_, &QAction::triggered, this, [this](bool on) {
-        const QString problem = controller_->setParameters({{"gravity", on}});
+        const QString problem = controller_->setParameters({{"gravity_on", on}});
         if (!problem.isEmpty()) statusBar()->showMessage(problem, 6000);
     });
     connect(controller_, &SimulationController::parametersChanged, this, &MainWindow::syncGravity);
@@ -273,11 +271,7 @@ void MainWindow::createToolPalette() {
     bar->addWidget(new QLabel(tr(" Heat "), bar));
     menu->addSeparator();
     const auto scaleEnergy = [this](double factor) {
-        Model* model = controller_->model();
-        if (!model || !model->tools()) return;
-        model->tools()->scaleKineticEnergy(factor);
-        controller_->noteEdited();
-        viewport_->update();
+        if (controller_->scaleKineticEnergy(factor)) viewport_->update();
     };
     connect(menuAction(menu, tr("Heat"), QKeySequence(Qt::CTRL | Qt::Key_Up),
                        tr("Raise the kinetic energy by 10 %")),
@@ -288,15 +282,13 @@ void MainWindow::createToolPalette() {
     menu->addSeparator();
     // The piston at the scene's piston speed: pressing the same direction again holds it.
     const auto drivePiston = [this](int direction) {
-        Model* model = controller_->model();
-        SceneTools* tools = model ? model->tools() : nullptr;
+        const SceneTools* tools = controller_->tools();
         if (!tools || !tools->hasPiston()) {
             statusBar()->showMessage(
                 tr("This experiment has no piston: tick “Piston” in Parameters → Walls and fields."), 6000);
             return;
         }
-        tools->drivePiston(tools->pistonDirection() == direction ? 0 : direction);
-        controller_->noteEdited();
+        controller_->drivePiston(tools->pistonDirection() == direction ? 0 : direction);
         if (!controller_->isRunning() && tools->pistonDirection() != 0)
             statusBar()->showMessage(tr("The piston moves while time runs (Space)."), 6000);
     };
@@ -310,13 +302,12 @@ void MainWindow::createToolPalette() {
 
 void MainWindow::syncGravity() {
     const Model* model = controller_->model();
-    const ParamSpec* spec = model ? findSpec(model->paramSpecs(), "gravity") : nullptr;
-    const bool toggle = spec && spec->kind == ParamKind::Boolean;
+    const bool toggle = model && findSpec(model->paramSpecs(), "gravity_on");
     gravity_->setVisible(toggle);
     gravity_->setEnabled(toggle && !controller_->isReadOnly());
     if (!toggle) return;
     const QSignalBlocker block(gravity_);
-    gravity_->setChecked(std::get<bool>(model->params().at("gravity")));
+    gravity_->setChecked(std::get<bool>(model->params().at("gravity_on")));
 }
 
 void MainWindow::fillPresetPicker() {

@@ -2,8 +2,9 @@
 // frame rate (a slow machine runs the same trajectory, only slower).
 #include "SimulationController.h"
 
+#include "FrameProfile.h"
 #include "ImportedRunModel.h"
-#include "gpu/QtGlContext.h"
+#include "viewport/QtGlContext.h"
 
 #include <algorithm>
 #include <cmath>
@@ -40,9 +41,6 @@ QString SimulationController::load(const Preset& preset, const StateRecord* stat
         emit notice(tr("Warning: %1").arg(QString::fromStdString(warning)));
     pending_.clear();
     if (stepsPerFrame_ < 0 && !model_->reversible()) setStepsPerFrame(-stepsPerFrame_);
-    const auto values = model_->params();
-    const auto it = values.find("dt");
-    baseDt_ = it != values.end() ? std::abs(std::get<double>(it->second)) : 0.0;
     applyDirection();
     restartSeries();
     emit modelReplaced();
@@ -64,7 +62,6 @@ void SimulationController::showImported(std::unique_ptr<Model> model, TimeSeries
                                                 last("time"));
     importedFrom_ = source;
     pending_.clear();
-    baseDt_ = 0.0; // nothing steps, so the direction of time is never applied to it
     series_.replace(std::move(series));
     emit modelReplaced();
 }
@@ -102,10 +99,6 @@ QString SimulationController::setParameters(const ParamValues& values) {
         const ParamSpec* spec = findSpec(model_->paramSpecs(), key);
         if (spec && !spec->appliesLive) pending_[key] = value;
     }
-    if (const auto it = values.find("dt"); it != values.end()) {
-        baseDt_ = std::abs(std::get<double>(it->second));
-        applyDirection();
-    }
     noteEdited();
     emit parametersChanged();
     return {};
@@ -113,6 +106,83 @@ QString SimulationController::setParameters(const ParamValues& values) {
 
 void SimulationController::noteEdited() {
     emit edited();
+}
+
+const SceneTools* SimulationController::tools() const {
+    return model_ && !isReadOnly() ? model_->tools() : nullptr;
+}
+
+SceneTools* SimulationController::editableTools() {
+    return model_ && !isReadOnly() ? model_->tools() : nullptr;
+}
+
+bool SimulationController::addObstacle(const Obstacle& obstacle) {
+    SceneTools* tools = editableTools();
+    if (!tools) return false;
+    tools->addObstacle(obstacle);
+    noteEdited();
+    return true;
+}
+
+bool SimulationController::removeObstacle(std::size_t index) {
+    SceneTools* tools = editableTools();
+    if (!tools || index >= tools->obstacles().size()) return false;
+    tools->removeObstacle(index);
+    noteEdited();
+    return true;
+}
+
+bool SimulationController::steerObstacle(std::size_t index, double x, double y) {
+    SceneTools* tools = editableTools();
+    if (!tools || index >= tools->obstacles().size()) return false;
+    if (isRunning())
+        tools->dragObstacle(index, x, y);
+    else
+        tools->placeObstacle(index, x, y);
+    noteEdited();
+    return true;
+}
+
+bool SimulationController::releaseObstacle(std::size_t index) {
+    SceneTools* tools = editableTools();
+    if (!tools || index >= tools->obstacles().size()) return false;
+    tools->releaseObstacle(index);
+    return true;
+}
+
+bool SimulationController::steerPiston(double x) {
+    SceneTools* tools = editableTools();
+    if (!tools || !tools->hasPiston()) return false;
+    if (isRunning())
+        tools->dragPiston(x);
+    else
+        tools->placePiston(x);
+    noteEdited();
+    return true;
+}
+
+bool SimulationController::drivePiston(int direction) {
+    SceneTools* tools = editableTools();
+    if (!tools || !tools->hasPiston()) return false;
+    tools->drivePiston(direction);
+    noteEdited();
+    return true;
+}
+
+QString SimulationController::spawnInRectangle(double x0, double y0, double x1, double y1) {
+    SceneTools* tools = editableTools();
+    if (!tools) return {};
+    const std::string said = tools->spawnInRectangle(x0, y0, x1, y1);
+    noteEdited();
+    return QString::fromStdString(said);
+}
+
+bool SimulationController::scaleKineticEnergy(double factor) {
+    SceneTools* tools = editableTools();
+    if (!tools) return false;
+    tools->scaleKineticEnergy(factor);
+    noteEdited();
+    return true;
 }
 
 bool SimulationController::runComplete() const {
@@ -175,10 +245,10 @@ void SimulationController::setHeatRate(double rate) {
 }
 
 void SimulationController::applyDirection() {
-    if (!model_ || baseDt_ == 0.0 || stepsPerFrame_ == 0 || !model_->reversible()) return;
-    const double signedDt = stepsPerFrame_ > 0 ? baseDt_ : -baseDt_;
-    const auto values = model_->params();
-    if (std::get<double>(values.at("dt")) != signedDt) model_->setParams({{"dt", signedDt}});
+    if (!model_ || isReadOnly() || stepsPerFrame_ == 0) return;
+    const int direction = stepsPerFrame_ > 0 ? 1 : -1;
+    if (direction < 0 && !model_->reversible()) return; // setStepsPerFrame() refused it already
+    if (model_->timeDirection() != direction) model_->setTimeDirection(direction);
 }
 
 void SimulationController::restartSeries() {
@@ -202,7 +272,10 @@ void SimulationController::advanceFrame() {
     // The frame's steps of heating at once: one O(N) rescale a frame instead of one a step.
     if (heatRate_ != 0.0 && steps > 0 && model_->tools() && model_->particleCount() > 0)
         model_->tools()->scaleKineticEnergy(std::exp(kHeatPerStepAtFull * heatRate_ * steps));
-    for (int s = 0; s < steps && !model_->failure(); ++s) model_->step();
+    {
+        const FramePartTimer timer(FramePart::Step);
+        for (int s = 0; s < steps && !model_->failure(); ++s) model_->step();
+    }
     stepsSinceClock_ += steps;
     if (rateClock_.isValid() && rateClock_.elapsed() > 500) {
         stepsPerSecond_ =
@@ -211,6 +284,7 @@ void SimulationController::advanceFrame() {
     }
     if (steps > 0 && ++framesSinceSample_ >= kFramesPerSample) {
         framesSinceSample_ = 0;
+        const FramePartTimer timer(FramePart::Sample); // the row, and the plots' data refresh it triggers
         sample();
     }
     emit frameAdvanced();

@@ -1,6 +1,8 @@
 // Owns the model and time: play / pause / single step / reset, signed steps per frame (negative runs
-// time backwards), a frame timer, the heat / cool control, blow-up handling, and the time-series store
-// the plots read. Views only read from it; edits go through it so the document knows it is modified.
+// time backwards through the model's direction of time), a frame timer, the heat / cool control,
+// blow-up handling, and the time-series store the plots read. Views only read from it; every edit of
+// the model (parameters, the mouse tools, heat / cool) goes through it, so the document knows it is
+// modified and one rule holds in every scene.
 #pragma once
 
 #include "SeriesStore.h"
@@ -47,6 +49,24 @@ public:
     // Something the user did changed the experiment (tools, parameters): the document is modified.
     void noteEdited();
 
+    // The scene's tools for reading (obstacles, the piston); nullptr when it has none or is read-only.
+    const SceneTools* tools() const;
+    // The mouse tools. Each edits the model, notes the edit and returns true; false (nothing done) when
+    // the scene has no such tool or the index names no obstacle. A steered body heads for its target at
+    // the scene's tool speed while time runs and is placed there at once while it stands still.
+    bool addObstacle(const Obstacle& obstacle);
+    bool removeObstacle(std::size_t index);
+    bool steerObstacle(std::size_t index, double x, double y);
+    bool releaseObstacle(std::size_t index); // it coasts on to its last target and stops there
+    bool steerPiston(double x);
+    // −1 compresses, +1 expands, 0 stops (at the scene's piston speed, while time runs).
+    bool drivePiston(int direction);
+    // Fills the rectangle (a point when the corners coincide) at the scene's temperature; the sentence
+    // for the status bar, empty when the scene cannot spawn.
+    QString spawnInRectangle(double x0, double y0, double x1, double y1);
+    // Heat (factor > 1) or cool the particles at once: kinetic energy × factor.
+    bool scaleKineticEnergy(double factor);
+
 public slots:
     void play();
     void pause();
@@ -73,7 +93,9 @@ signals:
     void notice(const QString& message); // one line for the status bar
 
 private:
-    void applyDirection();
+    void applyDirection(); // the sign of stepsPerFrame_ as the model's direction of time
+    // The model's tools when the user may edit them now.
+    SceneTools* editableTools();
     void restartSeries();
     bool runComplete() const; // the model's planned run length is reached
 
@@ -84,7 +106,6 @@ private:
     QString importedFrom_; // empty while the model is ours to run
     QTimer timer_;
     int stepsPerFrame_ = 5;
-    double baseDt_ = 0.0;
     double heatRate_ = 0.0;
     double stepsPerSecond_ = 0.0;
     int framesSinceSample_ = 0;

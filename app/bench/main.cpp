@@ -42,8 +42,13 @@ int main(int argc, char** argv) {
     app.add_option("--cpu-max", cpuMax, "Largest N also timed on the CPU model (0: none)");
     app.add_option("--repeats", settings.repeats, "Timed repeats per point; the median is reported");
     app.add_option("--seconds", settings.targetSeconds, "Target seconds per repeat");
+    settings.maxSettleSeconds = 8.0;
+    app.add_option("--settle", settings.maxSettleSeconds,
+                   "Longest seconds a point steps before its repeats, until two batches agree within 3 %");
     app.add_option("--out", out, "Also write the JSON lines to this file");
-    bool glDebug = false;
+    bool glDebug = false, profileEach = false;
+    app.add_flag("--profile-each", profileEach,
+                 "After timing each GPU gas point, profile its passes on the same model (timestamps)");
     app.add_flag("--gl-debug", glDebug, "Print the driver's debug messages (performance remarks)");
     CLI11_PARSE(app, argc, argv);
 
@@ -77,6 +82,19 @@ int main(int argc, char** argv) {
     emit({{"context", info.summary()}, {"copy_bandwidth_bytes_per_s", copy}});
 
     std::vector<pl::gl::BenchPoint> points;
+    // Where the time goes: GPU timestamps around each pass (a sync every step, so the passes add up to
+    // more than a pipelined step).
+    auto profilePasses = [&](pl::gl::MdModelGL& model, std::size_t n) {
+        model.setProfiling(true);
+        constexpr int kProfiledSteps = 50;
+        for (int s = 0; s < kProfiledSteps; ++s) model.step();
+        for (const auto& [pass, ns] : model.profile())
+            emit({{"scene", "gas"},
+                  {"particles", n},
+                  {"pass", pass},
+                  {"us_per_step", ns / kProfiledSteps / 1e3}});
+        model.setProfiling(false);
+    };
     auto sweep = [&](const std::string& scene, const std::vector<std::size_t>& sizes, double bytes,
                      double goalBytes) {
         for (std::size_t n : sizes) {
@@ -94,34 +112,33 @@ int main(int argc, char** argv) {
                       {"particle_steps_per_s", p.particleStepsPerSecond},
                       {"us_per_step", p.microsecondsPerStep},
                       {"dispatches_per_step", p.dispatchesPerStep},
+                      {"issue_us_per_step", p.issueMicrosecondsPerStep},
+                      {"repeat_us_per_step", p.repeatMicrosecondsPerStep},
+                      {"settle_s", p.settleSeconds},
                       {"model_bytes_per_particle_step", gpu ? bytes : 0.0},
                       {"achieved_bandwidth_fraction", gpu ? p.particleStepsPerSecond * bytes / copy : 0.0},
                       {"goal_particle_steps_per_s", copy / goalBytes}});
                 points.push_back(p);
+                if (auto* gas = dynamic_cast<pl::gl::MdModelGL*>(choice.model.get()); gas && profileEach)
+                    profilePasses(*gas, n);
             }
         }
     };
     sweep("gas", gasSizes, kGasBytesPerParticleStep, 150.0);
     sweep("fluid", fluidSizes, kFluidBytesPerParticleStep, 700.0);
-    // Where the time goes at the largest size: GPU timestamps around each pass.
-    if (!gasSizes.empty()) {
+    // Where the time goes at the largest size, on a fresh model.
+    if (!gasSizes.empty() && !profileEach) {
         const pl::Preset preset = pl::gl::scaledGasPreset(gasSizes.back());
         pl::gl::MdModelGL model(context);
         model.reset(preset);
         for (int s = 0; s < 5; ++s) model.step();
-        model.setProfiling(true);
-        constexpr int kProfiledSteps = 50;
-        for (int s = 0; s < kProfiledSteps; ++s) model.step();
-        for (const auto& [pass, ns] : model.profile())
-            emit({{"scene", "gas"},
-                  {"particles", gasSizes.back()},
-                  {"pass", pass},
-                  {"us_per_step", ns / kProfiledSteps / 1e3}});
+        profilePasses(model, gasSizes.back());
     }
-    std::printf("\n%s\nGL copy bandwidth %.3g B/s\n%-6s %-4s %10s %14s %10s %6s\n", info.summary().c_str(),
-                copy, "scene", "bk", "N", "p-steps/s", "us/step", "disp");
+    std::printf("\n%s\nGL copy bandwidth %.3g B/s\n%-6s %-4s %10s %14s %10s %10s %6s\n",
+                info.summary().c_str(), copy, "scene", "bk", "N", "p-steps/s", "us/step", "issue us", "disp");
     for (const auto& p : points)
-        std::printf("%-6s %-4s %10zu %14.4g %10.2f %6d\n", p.scene.c_str(), p.backend.c_str(), p.particles,
-                    p.particleStepsPerSecond, p.microsecondsPerStep, p.dispatchesPerStep);
+        std::printf("%-6s %-4s %10zu %14.4g %10.2f %10.2f %6d\n", p.scene.c_str(), p.backend.c_str(),
+                    p.particles, p.particleStepsPerSecond, p.microsecondsPerStep, p.issueMicrosecondsPerStep,
+                    p.dispatchesPerStep);
     return 0;
 }

@@ -53,8 +53,7 @@ std::unique_ptr<Model> prepare(const std::string& name, const std::vector<std::s
         applySets(snapshot.preset, sets);
         if (seed) snapshot.preset.seed = *seed;
     }
-    gl::BackendChoice choice =
-        gl::createModel(snapshot.preset.model, gl::backendFromName(backend), &snapshot.preset);
+    gl::BackendChoice choice = gl::createModel(snapshot.preset, gl::backendFromName(backend));
     if (!choice.message.empty()) std::cerr << "particlelab-cli: " << choice.message << '\n';
     if (continues) choice.model->restoreState(snapshot.state);
     return std::move(choice.model);
@@ -135,6 +134,26 @@ int listPresets() {
         std::string summary = p.preset.description.substr(0, p.preset.description.find(". "));
         std::cout << p.name << "\t" << p.preset.model << "\t" << summary << "\n";
     }
+    return kOk;
+}
+
+std::string sceneKinds() {
+    std::string kinds;
+    for (const ModelDescriptor& model : modelCatalog()) kinds += (kinds.empty() ? "" : ", ") + model.kind;
+    return kinds;
+}
+
+int listColumns(const std::string& sceneOrPreset) {
+    const ModelDescriptor* model = findModel(sceneOrPreset);
+    try {
+        if (!model) model = findModel(loadPreset(sceneOrPreset).model);
+    } catch (const PresetError& e) {
+        std::cerr << "particlelab-cli: " << e.what() << "\n";
+        return kBadInput;
+    }
+    std::cout << "name\tunit\tlabel\n";
+    for (const SeriesColumn& column : model->series)
+        std::cout << column.name << '\t' << column.unit << '\t' << column.label << '\n';
     return kOk;
 }
 

@@ -3,6 +3,7 @@
 
 #include "common/Model.h"
 #include "common/Preset.h"
+#include "md/MdIntegratorTable.h"
 
 #include <cstdint>
 #include <optional>
@@ -48,8 +49,7 @@ struct EchoOptions {
 };
 
 struct SweepOptions {
-    std::vector<std::string> integrators{"explicit-euler", "symplectic-euler", "velocity-verlet", "rk4",
-                                         "forest-ruth"};
+    std::vector<std::string> integrators = mdIntegratorNamesByOrder();
     std::vector<int> steps{16, 32, 64, 128, 256}; // steps over the horizon
     double stiffness = 1000.0;
     std::string from;              // a gas preset: sweep from its state against a Forest–Ruth reference
@@ -67,6 +67,10 @@ void applySets(Preset& preset, const std::vector<std::string>& sets);
 std::string histogramsCsv(const Model& model);
 
 int listPresets();
+// The registered scene kinds, comma-separated ("gas, dsmc, fluid").
+std::string sceneKinds();
+// The series columns of a scene kind, or of a preset's kind, one "name<TAB>unit<TAB>label" line each.
+int listColumns(const std::string& sceneOrPreset);
 int runSimulation(const RunOptions& options);
 int benchmark(const BenchOptions& options);
 // The Loschmidt echo of a periodic gas in double, float and bit-reversible integer arithmetic.

@@ -1,12 +1,13 @@
+// The methods lab's CLI subcommands: each runs its study in core, writes the CSV and prints a summary.
 #include "MethodsCommands.h"
 
 #include "Commands.h"
 #include "catalog/ModelCatalog.h"
+#include "common/sweep/SweepGrid.h"
 #include "dsmc/DsmcSweep.h"
 #include "md/MdModel.h"
 #include "md/StabilityMap.h"
 #include "methods/MdVsDsmc.h"
-#include "methods/SweepGrid.h"
 #include "pbf/FluidSweep.h"
 
 #include <cmath>
@@ -39,7 +40,7 @@ int stabilityMap(const StabilityOptions& options) {
     csv << "integrator,dt,stiffness,omega_dt,outcome,energy_error,steps,seconds,detail\n";
     for (const auto& name : options.integrators) {
         try {
-            integratorFromName(name);
+            mdIntegrator(name);
         } catch (const std::exception& e) {
             std::cerr << "particlelab-cli: " << e.what() << "\n";
             return kBadInput;
@@ -55,7 +56,7 @@ int stabilityMap(const StabilityOptions& options) {
                     << ',' << c.status.seconds << ',' << csvField(c.status.detail) << '\n';
             }
             std::cerr << name << ", k = " << k << ": stable up to ω dt = " << md::measuredLimit(row)
-                      << " (linear theory " << stabilityLimit(integratorFromName(name)) << ")\n";
+                      << " (linear theory " << mdIntegrator(name).stabilityLimit << ")\n";
         }
     }
     return writeOrPrint(options.out, csv.str());

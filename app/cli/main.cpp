@@ -26,6 +26,11 @@ int main(int argc, char** argv) {
 
     app.add_subcommand("list", "List the built-in presets with a one-line description");
 
+    std::string columnsScene;
+    app.add_subcommand("columns", "List a scene's series columns, the CSV header of run: name, unit, label")
+        ->add_option("scene", columnsScene, "A scene kind (" + sceneKinds() + ") or a preset")
+        ->required();
+
     RunOptions run;
     auto* runCmd = app.add_subcommand("run", "Run a preset and write observables as CSV");
     runCmd->add_option("preset", run.preset, "Built-in preset name or preset file")->required();
@@ -84,7 +89,10 @@ int main(int argc, char** argv) {
     SweepOptions sweep;
     auto* sweepCmd = app.add_subcommand(
         "sweep", "Accuracy against cost of the gas's integrators on a harmonic pair (CSV; orders on stderr)");
-    sweepCmd->add_option("--integrators", sweep.integrators, "Schemes to compare (default: all five)");
+    sweepCmd
+        ->add_option("--integrators", sweep.integrators,
+                     "Schemes to compare (default: all):\n" + pl::mdIntegratorHelp())
+        ->check(CLI::IsMember(pl::mdIntegratorNames()));
     sweepCmd->add_option("--steps", sweep.steps, "Steps over the horizon, one run each (default 16 … 256)")
         ->transform(wholeNumber(1, 1'000'000));
     sweepCmd->add_option("--stiffness", sweep.stiffness, "k of the contact [M/T²]")->check(positiveReal());
@@ -101,7 +109,10 @@ int main(int argc, char** argv) {
         "stability",
         "Stability map of the gas's integrators: dt × stiffness, each cell stable, inaccurate or "
         "unstable (CSV; measured limits on stderr)");
-    stabilityCmd->add_option("--integrators", stability.integrators, "Schemes (default: all five)");
+    stabilityCmd
+        ->add_option("--integrators", stability.integrators,
+                     "Schemes (default: all):\n" + pl::mdIntegratorHelp())
+        ->check(CLI::IsMember(pl::mdIntegratorNames()));
     stabilityCmd->add_option("--omega-dt", stability.omegaDt, "ω dt of the columns (default 0.05 … 5)")
         ->check(positiveReal());
     stabilityCmd->add_option("--stiffness", stability.stiffness, "k of the rows (default 100 1000 10000)")
@@ -175,6 +186,7 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("echo")) return loschmidtEcho(echo);
     if (app.got_subcommand("sweep")) return integratorSweep(sweep);
     if (app.got_subcommand("list")) return listPresets();
+    if (app.got_subcommand("columns")) return listColumns(columnsScene);
     if (app.got_subcommand("run")) return runSimulation(run);
     return benchmark(bench);
 }

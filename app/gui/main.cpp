@@ -4,6 +4,7 @@
 //        particlelab --lab PAGE --plot FILE [--csv FILE]   (a methods-lab page, no window)
 #include "Autosave.h"
 #include "ExperimentDocument.h"
+#include "FrameProfile.h"
 #include "MainWindow.h"
 #include "SimulationController.h"
 #include "i18n/Translations.h"
@@ -18,7 +19,7 @@
 #include <cstdio>
 
 int main(int argc, char** argv) {
-    // The GPU models' context shares buffers with the viewports (ui/gpu/QtGlContext.h).
+    // The GPU models' context shares buffers with the viewports (ui/viewport/QtGlContext.h).
     QApplication::setAttribute(Qt::AA_ShareOpenGLContexts);
     QApplication app(argc, argv);
     QApplication::setApplicationName("ParticleLab");
@@ -96,13 +97,16 @@ int main(int argc, char** argv) {
         // Frames actually drawn by the viewport while the simulation runs at its normal frame timer.
         QElapsedTimer clock; // lives until exec() returns, after the measurement
         clock.start();
+        pl::ui::FrameProfile::instance().setEnabled(true);
         const long long startStep = window.controller()->model()->stepCount();
         QTimer::singleShot(static_cast<int>(1000 * parser.value(measureFps).toDouble()), &app, [&] {
             const double seconds = clock.elapsed() / 1000.0;
-            std::printf(
-                "{\"preset\": \"%s\", \"seconds\": %.2f, \"fps\": %.1f, \"steps_per_second\": %.0f}\n",
-                qPrintable(window.document()->title()), seconds, window.viewportCore()->framesPerSecond(),
-                (window.controller()->model()->stepCount() - startStep) / seconds);
+            std::printf("{\"preset\": \"%s\", \"seconds\": %.2f, \"fps\": %.1f, \"steps_per_second\": %.0f, "
+                        "\"frame_parts\": %s}\n",
+                        qPrintable(window.document()->title()), seconds,
+                        window.viewportCore()->framesPerSecond(),
+                        (window.controller()->model()->stepCount() - startStep) / seconds,
+                        qPrintable(pl::ui::FrameProfile::instance().report()));
             std::fflush(stdout);
             window.document()->setModified(false);
             QApplication::quit();

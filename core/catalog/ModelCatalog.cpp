@@ -1,40 +1,63 @@
-// Model registry and built-in presets.
+// The registry: the registrations of every model kind (one line each), lookups and built-in presets.
 #include "ModelCatalog.h"
 
 #include "common/AtomicFile.h"
-
 #include "common/EmbeddedFiles.h"
-#include "dsmc/DsmcModel.h"
-#include "md/MdModel.h"
-#include "pbf/PbfModel.h"
 
 #include <filesystem>
 
 namespace pl {
+
+// The registrations, each defined in its kind's folder: a new kind adds one line to each list.
+const ModelDescriptor& gasRegistration();   // md/MdRegistration.cpp
+const ModelDescriptor& dsmcRegistration();  // dsmc/DsmcRegistration.cpp
+const ModelDescriptor& fluidRegistration(); // pbf/PbfRegistration.cpp
+
+const std::vector<std::reference_wrapper<const ModelDescriptor>>& modelCatalog() {
+    static const std::vector<std::reference_wrapper<const ModelDescriptor>> list{
+        gasRegistration(),
+        dsmcRegistration(),
+        fluidRegistration(),
+    };
+    return list;
+}
 
 namespace {
 constexpr std::string_view kPresetPrefix = "presets/";
 constexpr std::string_view kPresetSuffix = ".json";
 } // namespace
 
-const std::vector<ModelInfo>& modelCatalog() {
-    static const std::vector<ModelInfo> list{{"gas", "Gas (molecular dynamics)", &MdParams::describe()},
-                                             {"dsmc", "Rarefied gas (DSMC)", &DsmcParams::describe()},
-                                             {"fluid", "Fluid (position-based)", &PbfParams::describe()}};
-    return list;
+const ModelDescriptor* findModel(const std::string& kind) {
+    for (const ModelDescriptor& m : modelCatalog())
+        if (m.kind == kind) return &m;
+    return nullptr;
 }
 
 const std::vector<ParamSpec>* specsForModel(const std::string& kind) {
-    for (const auto& m : modelCatalog())
-        if (m.kind == kind) return m.specs;
-    return nullptr;
+    const ModelDescriptor* m = findModel(kind);
+    return m ? m->specs : nullptr;
 }
 
 std::unique_ptr<Model> createModel(const std::string& kind) {
-    if (kind == "gas") return std::make_unique<MdModel>();
-    if (kind == "dsmc") return std::make_unique<DsmcModel>();
-    if (kind == "fluid") return std::make_unique<PbfModel>();
-    return nullptr;
+    const ModelDescriptor* m = findModel(kind);
+    return m ? m->create() : nullptr;
+}
+
+std::size_t particleCount(const Preset& preset) {
+    const ModelDescriptor* m = findModel(preset.model);
+    if (!m) throw PresetError("model", "unknown model \"" + preset.model + "\"");
+    try {
+        return m->particleCount(preset);
+    } catch (const ParamError& e) {
+        throw PresetError("params." + e.key(), e.what());
+    }
+}
+
+Preset defaultPreset(const ModelDescriptor& descriptor) {
+    Preset preset;
+    preset.model = descriptor.kind;
+    for (const ParamSpec& spec : *descriptor.specs) preset.params[spec.key] = spec.defaultValue;
+    return preset;
 }
 
 const std::vector<BuiltinPreset>& builtinPresets() {
@@ -42,11 +65,19 @@ const std::vector<BuiltinPreset>& builtinPresets() {
         std::vector<BuiltinPreset> presets;
         for (const auto& file : embeddedFiles()) {
             if (!file.path.starts_with(kPresetPrefix) || !file.path.ends_with(kPresetSuffix)) continue;
-            const std::string stem = std::filesystem::path(std::string(file.path)).stem().string();
-            presets.push_back({stem, parsePreset(file.text, specsForModel, std::string(file.path))});
+            const std::filesystem::path path(std::string(file.path));
+            presets.push_back({path.stem().string(), path.parent_path().filename().string(),
+                               parsePreset(file.text, specsForModel, std::string(file.path))});
         }
         return presets;
     }();
+    return list;
+}
+
+std::vector<const BuiltinPreset*> builtinPresetsOf(const std::string& kind) {
+    std::vector<const BuiltinPreset*> list;
+    for (const BuiltinPreset& p : builtinPresets())
+        if (p.folder == kind) list.push_back(&p);
     return list;
 }
 

@@ -1,36 +1,43 @@
-// The one place that knows every scene: model kinds, their parameter specs, built-in presets and the
-// factory that creates a model (and, later, chooses its backend).
+// The one place that knows every scene: the registered model kinds (one ModelDescriptor each), their
+// built-in presets, and the creation of a CPU model. The GPU models are core/gl/GpuModels.cpp's table.
 #pragma once
 
+#include "ModelDescriptor.h"
 #include "common/Model.h"
 #include "common/Preset.h"
 #include "common/Snapshot.h"
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
 
 namespace pl {
 
-struct ModelInfo {
-    std::string kind;  // "gas"
-    std::string title; // "Gas (molecular dynamics)"
-    const std::vector<ParamSpec>* specs;
-};
-
-const std::vector<ModelInfo>& modelCatalog();
+// Every registered kind, in menu order.
+const std::vector<std::reference_wrapper<const ModelDescriptor>>& modelCatalog();
+// The kind's descriptor, or nullptr for an unknown kind.
+const ModelDescriptor* findModel(const std::string& kind);
 const std::vector<ParamSpec>* specsForModel(const std::string& kind);
 
 // A new model of this kind, reset to its defaults; nullptr for an unknown kind.
 std::unique_ptr<Model> createModel(const std::string& kind);
 
+// The particles instantiate(preset) makes, from the preset alone. Throws PresetError for an unknown
+// model or a parameter its specs refuse.
+std::size_t particleCount(const Preset& preset);
+
 struct BuiltinPreset {
-    std::string name; // file stem, e.g. "gas-seed"
+    std::string name;   // file stem, e.g. "gas-seed"
+    std::string folder; // the folder under resources/presets/ it was read from: its model kind
     Preset preset;
 };
 
-// Every preset under resources/presets/, parsed (a broken built-in preset is a build defect: tests load all).
+// Every preset under resources/presets/<kind>/, parsed (a broken built-in preset is a build defect:
+// tests load all).
 const std::vector<BuiltinPreset>& builtinPresets();
+// The built-in presets of one kind, in file order.
+std::vector<const BuiltinPreset*> builtinPresetsOf(const std::string& kind);
 
 // A built-in preset by name, or a preset file by path. Throws PresetError.
 Preset loadPreset(const std::string& nameOrPath);

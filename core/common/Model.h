@@ -65,7 +65,7 @@ public:
     virtual StateRecord saveState() const = 0;
     virtual void restoreState(const StateRecord& state) = 0;
 
-    // Advances by one signed time step. Does nothing once failure() is set.
+    // Advances by one step of timeDirection() × dt. Does nothing once failure() is set.
     virtual void step() = 0;
     virtual std::int64_t stepCount() const = 0;
     virtual double time() const = 0;
@@ -75,6 +75,12 @@ public:
     virtual std::int64_t plannedSteps() const { return 0; }
     // Whether a negative time step runs the dynamics backwards (stochastic collisions cannot).
     virtual bool reversible() const { return true; }
+    // The direction of time, +1 or −1: each step advances by timeDirection() × the dt parameter, so a
+    // preset with a negative dt runs backwards at +1 (the CLI's reversal runs), and turning time round
+    // changes no parameter, validates nothing and keeps the energy reference. Throws std::logic_error
+    // for −1 when !reversible(), std::invalid_argument for anything but ±1.
+    virtual void setTimeDirection(int direction) = 0;
+    virtual int timeDirection() const = 0;
     // Checks the state now, as the model otherwise does on its own schedule (the gas: energy every 64
     // steps), and sets failure() when it has blown up; a caller runs it before it records a sample and at
     // the end of a run, so that no exploded row is kept and no run ends well with a runaway state.

@@ -86,6 +86,7 @@ void NeighbourList::build(const double* x, const double* y, std::size_t count, d
         forEachNear(cells_, x, y, static_cast<std::uint32_t>(i), reach2,
                     [&](std::uint32_t j) { *out++ = j; });
     }
+    fillRows();
     payload_.assign(entries_.size(), 0);
     if (carry) carryPayload(count, offsets_, entries_, payload_, oldOffsets_, oldEntries_, oldPayload_);
     builtX_.assign(x, x + count);
@@ -101,6 +102,16 @@ void NeighbourList::restore(Contents c) {
     builtY_ = std::move(c.builtY);
     skin_ = c.skin;
     valid_ = c.valid;
+    fillRows();
+}
+
+void NeighbourList::fillRows() {
+    const auto n = static_cast<long long>(offsets_.empty() ? 0 : offsets_.size() - 1);
+    rowOf_.resize(entries_.size());
+#pragma omp parallel for schedule(static) if (n >= kParallelMinParticles)
+    for (long long i = 0; i < n; ++i)
+        for (std::uint32_t k = offsets_[i]; k < offsets_[i + 1]; ++k)
+            rowOf_[k] = static_cast<std::uint32_t>(i);
 }
 
 void NeighbourList::permute(const std::vector<std::uint32_t>& newToOld) {
@@ -126,6 +137,7 @@ void NeighbourList::permute(const std::vector<std::uint32_t>& newToOld) {
             payload_[offsets_[m] + k] = oldPayload_[from + k];
         }
     }
+    fillRows();
     std::vector<double> bx(count), by(count);
     for (std::size_t m = 0; m < count; ++m) bx[m] = builtX_[newToOld[m]], by[m] = builtY_[newToOld[m]];
     builtX_.swap(bx);

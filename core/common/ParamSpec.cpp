@@ -117,6 +117,14 @@ ParamSpec makeChoice(std::string key, std::string label, std::string group, std:
     return s;
 }
 
+ParamSpec makeChoice(std::string key, std::string label, std::string group, std::string tooltip,
+                     bool appliesLive) {
+    ParamSpec s = makeSpec(std::move(key), std::move(label), "", std::move(group), std::move(tooltip), 0, 0,
+                           0, std::string(), appliesLive);
+    s.kind = ParamKind::Choice;
+    return s;
+}
+
 std::string describeAllowed(const ParamSpec& spec) {
     switch (spec.kind) {
     case ParamKind::Real:

@@ -3,9 +3,11 @@
 
 #include <functional>
 #include <map>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -64,6 +66,9 @@ ParamSpec makeSpec(std::string key, std::string label, std::string unit, std::st
 // A Choice spec; the first choice is the default.
 ParamSpec makeChoice(std::string key, std::string label, std::string group, std::string tooltip,
                      std::vector<std::string> choices, bool appliesLive = false);
+// A Choice spec whose choices and default bindChoice fills in from the enum's table.
+ParamSpec makeChoice(std::string key, std::string label, std::string group, std::string tooltip,
+                     bool appliesLive = false);
 
 // "[1e-06, 1000] M" or "one of: a, b, c" — used in every error message about a value.
 std::string describeAllowed(const ParamSpec& spec);
@@ -108,6 +113,39 @@ template <class P> ParamField<P> bindBool(bool P::*member, ParamSpec spec) {
 template <class P> ParamField<P> bindText(std::string P::*member, ParamSpec spec) {
     return {std::move(spec), [member](const P& p) { return ParamValue{p.*member}; },
             [member](P& p, const ParamValue& v) { p.*member = std::get<std::string>(v); }};
+}
+
+// The names of a choice enum E, in the order the panel lists them. Each choice enum declares its table
+// next to itself as `const ChoiceTable<E>& choiceTable(E)`, found by argument-dependent lookup, so C++
+// compares enums while preset files, the command line and the panel keep the names.
+template <class E> using ChoiceTable = std::vector<std::pair<E, std::string>>;
+
+// The name of a choice value, e.g. nameOf(MdForceMethod::AllPairs) == "all-pairs".
+template <class E> const std::string& nameOf(E value) {
+    for (const auto& [v, name] : choiceTable(E{}))
+        if (v == value) return name;
+    throw std::logic_error("a choice value without a name in its table");
+}
+
+// The choice value of a name, or nothing when the table does not list it.
+template <class E> std::optional<E> choiceNamed(std::string_view name) {
+    for (const auto& [v, n] : choiceTable(E{}))
+        if (n == name) return v;
+    return std::nullopt;
+}
+
+// Binds a Choice spec to an enum member; the choices come from E's table and the default from P's.
+template <class P, class E> ParamField<P> bindChoice(E P::*member, ParamSpec spec) {
+    spec.kind = ParamKind::Choice;
+    spec.choices.clear();
+    for (const auto& entry : choiceTable(E{})) spec.choices.push_back(entry.second);
+    spec.defaultValue = nameOf(P{}.*member);
+    return {std::move(spec), [member](const P& p) { return ParamValue{nameOf(p.*member)}; },
+            [member](P& p, const ParamValue& v) {
+                const auto value = choiceNamed<E>(std::get<std::string>(v));
+                if (!value) throw std::logic_error("an unchecked choice reached bindChoice");
+                p.*member = *value;
+            }};
 }
 
 template <class P> std::vector<ParamSpec> specsOf(const std::vector<ParamField<P>>& fields) {

@@ -2,6 +2,7 @@
 #include "Preset.h"
 
 #include "AtomicFile.h"
+#include "PresetMigration.h"
 
 #include <cmath>
 #include <nlohmann/json.hpp>
@@ -186,13 +187,14 @@ Preset parsePreset(std::string_view text, const SpecLookup& specsFor, const std:
     requireOnlyKeys(root, {"schema", "model", "name", "description", "seed", "params", "obstacles"}, source,
                     "");
 
-    if (!root.contains("schema")) fail(source, "schema", "missing 'schema' (this version reads schema 1)");
+    const std::string readable = "this version reads schemas " + std::to_string(Preset::kOldestSchema) +
+                                 " to " + std::to_string(Preset::kSchema);
+    if (!root.contains("schema")) fail(source, "schema", "missing 'schema' (" + readable + ")");
     const Json& schema = root.at("schema");
     if (!schema.is_number_integer()) fail(source, "schema", "'schema' must be an integer");
-    if (schema.get<long long>() != Preset::kSchema)
-        fail(source, "schema",
-             "schema " + std::to_string(schema.get<long long>()) +
-                 " is not supported (this version reads schema " + std::to_string(Preset::kSchema) + ")");
+    const long long version = schema.get<long long>();
+    if (version < Preset::kOldestSchema || version > Preset::kSchema)
+        fail(source, "schema", "schema " + std::to_string(version) + " is not supported (" + readable + ")");
 
     Preset preset;
     if (!root.contains("model") || !root.at("model").is_string())
@@ -216,13 +218,23 @@ Preset parsePreset(std::string_view text, const SpecLookup& specsFor, const std:
     if (root.contains("params")) {
         const Json& params = root.at("params");
         if (!params.is_object()) fail(source, "params", "'params' must be an object of key: value");
-        for (const auto& [key, value] : params.items()) {
+        std::map<std::string, std::string> spelledAs; // schema-2 key → the older key the file wrote
+        const Json current =
+            migrateParams(preset.model, static_cast<int>(version), params, source, spelledAs);
+        for (const auto& [key, value] : current.items()) {
+            const auto old = spelledAs.find(key);
+            const std::string where = "params." + (old != spelledAs.end() ? old->second : key);
             const ParamSpec* spec = findSpec(*specs, key);
             if (!spec)
-                fail(source, "params." + key,
-                     "unknown parameter 'params." + key + "' for model " + preset.model);
+                fail(source, where,
+                     "unknown parameter '" + where + "' for model " + preset.model + " (schema " +
+                         std::to_string(version) + ")");
             ParamValue v = toParamValue(value);
-            if (auto problem = checkValue(*spec, v); !problem.empty()) fail(source, "params." + key, problem);
+            if (auto problem = checkValue(*spec, v); !problem.empty())
+                fail(source, where,
+                     old == spelledAs.end() ? problem
+                                            : "'" + where + "' (schema " + std::to_string(version) +
+                                                  ", now '" + key + "'): " + problem);
             preset.params[key] = std::move(v);
         }
     }

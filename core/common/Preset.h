@@ -14,8 +14,9 @@
 namespace pl {
 
 struct Preset {
-    static constexpr int kSchema = 1;
-    std::string model; // "gas", later "dsmc", "fluid"
+    static constexpr int kSchema = 2;       // written; see docs/presets.md for what changed
+    static constexpr int kOldestSchema = 1; // read and migrated to kSchema with the same meaning
+    std::string model;                      // "gas", later "dsmc", "fluid"
     std::string name;
     std::string description;
     std::uint64_t seed = 1;
@@ -38,11 +39,13 @@ private:
 using SpecLookup = std::function<const std::vector<ParamSpec>*(const std::string& model)>;
 
 // Parses and validates preset JSON: syntax, schema version, model, every key, type, range and finiteness.
+// A file of an older schema (kOldestSchema up) is migrated to kSchema first: renamed keys and changed
+// types keep their meaning (PresetMigration.h), and errors name the entry as the file spells it.
 // Throws PresetError with a message naming the entry and what is allowed. sourceName prefixes messages.
 Preset parsePreset(std::string_view json, const SpecLookup& specsFor,
                    const std::string& sourceName = "preset");
 
-// Serialises with parameters in spec order (every parameter written, defaults included).
+// Serialises as schema kSchema with parameters in spec order (every parameter written, defaults included).
 std::string serializePreset(const Preset& preset, const std::vector<ParamSpec>& specs);
 
 Preset readPresetFile(const std::string& path, const SpecLookup& specsFor);

@@ -33,7 +33,7 @@ double ksDistance(std::vector<double>& sample, const std::function<double(double
 }
 
 double ksCritical(double n, double significance) {
-    // Asymptotic Kolmogorov quantiles (physics.md §1).
+    // Asymptotic Kolmogorov quantiles (docs/gas.md#kolmogorov-smirnov-test).
     const double c = significance <= 0.01 ? 1.628 : 1.358;
     return c / std::sqrt(n);
 }

@@ -7,11 +7,11 @@ namespace pl {
 
 CollisionModel CollisionModel::fromParams(const DsmcParams& p) {
     CollisionModel m;
-    if (p.crossSection == "seed") {
+    if (p.crossSection == DsmcCrossSection::Seed) {
         m = {Kind::Seed, 1e-18, 0.75}; // σ = 1e-18 c_r^-1/2 m², as the seed writes it
-    } else if (p.crossSection == "hard-sphere") {
+    } else if (p.crossSection == DsmcCrossSection::HardSphere) {
         m = {Kind::HardSphere, std::numbers::pi * p.diameter * p.diameter, 0.5};
-    } else if (p.crossSection == "maxwell") {
+    } else if (p.crossSection == DsmcCrossSection::Maxwell) {
         m = {Kind::Maxwell, p.maxwellSigmaCr, 1.0};
     } else {
         // Bird (1994) eq. 4.63: σ = π d_ref² (2 k T_ref / (m_r c_r²))^(ω − 1/2) / Γ(5/2 − ω), m_r = m/2.

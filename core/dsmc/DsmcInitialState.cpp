@@ -34,13 +34,13 @@ double removeMean(DsmcState& s, std::size_t first) {
 
 void DsmcModel::buildInitialState() {
     state_.clear();
-    if (params_.initial == "bkw") {
-        addBkwPopulation(params_.count1);
-    } else if (params_.initial == "maxwellian") {
-        addPopulation(params_.count1, 0.0, 0, kBeamOneStream);
+    if (params_.initial == DsmcInitialState::Bkw) {
+        addBkwPopulation(params_.countA);
+    } else if (params_.initial == DsmcInitialState::Maxwellian) {
+        addPopulation(params_.countA, 0.0, 0, kBeamOneStream);
     } else {
-        addPopulation(params_.count1, params_.drift1, 0, kBeamOneStream);
-        addPopulation(params_.count2, params_.drift2, 1, kBeamTwoStream);
+        addPopulation(params_.countA, params_.driftA, 0, kBeamOneStream);
+        addPopulation(params_.countB, params_.driftB, 1, kBeamTwoStream);
     }
 }
 
@@ -74,8 +74,8 @@ void DsmcModel::addPopulation(long long count, double drift, std::uint8_t origin
 }
 
 void DsmcModel::addBkwPopulation(long long count) {
-    // BKW at K₀ = 0.6 (physics.md §2): speed = χ₅ variate × √(0.6 kT/m), direction uniform on the sphere.
-    // Only the mean is removed; the moments are normalised by the sampled ⟨c²⟩, which DSMC conserves.
+    // BKW at K₀ = 0.6 (docs/dsmc.md#bkw-solution): speed = χ₅ variate × √(0.6 kT/m), direction uniform on the
+    // sphere. Only the mean is removed; the moments are normalised by the sampled ⟨c²⟩, which DSMC conserves.
     const double scale = std::sqrt(0.6 * kBoltzmann * params_.temperature / params_.mass());
     const std::size_t first = state_.size();
     for (long long k = 0; k < count; ++k) {

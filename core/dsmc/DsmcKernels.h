@@ -22,9 +22,9 @@ inline double relativeSpeed(const Velocity& a, const Velocity& b) {
     return std::sqrt(x * x + y * y + z * z);
 }
 
-// Elastic isotropic scattering in the centre-of-mass frame (Bird 1994 §2.4; physics.md §2): the centre
-// of mass velocity and |c_r| are kept, the direction of c_r becomes (cos θ, φ) with cos θ = 2u₁ − 1 and
-// φ = 2π u₂. Momentum and energy are conserved to round-off.
+// Elastic isotropic scattering in the centre-of-mass frame (Bird 1994 §2.4;
+// docs/dsmc.md#isotropic-scattering): the centre of mass velocity and |c_r| are kept, the direction of c_r
+// becomes (cos θ, φ) with cos θ = 2u₁ − 1 and φ = 2π u₂. Momentum and energy are conserved to round-off.
 inline void scatterIsotropic(Velocity& a, Velocity& b, double ma, double mb, double u1, double u2) {
     const double total = ma + mb;
     const Velocity cm{(ma * a.x + mb * b.x) / total, (ma * a.y + mb * b.y) / total,

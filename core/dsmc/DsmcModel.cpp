@@ -31,40 +31,22 @@ DsmcModel::DsmcModel() {
     reset();
 }
 
-ParamValues DsmcModel::params() const {
-    return valuesOf(params_, DsmcParams::fields());
+void DsmcModel::refuseParams(const DsmcParams& next) const {
+    if (const std::string why = nuDtRefusal(next); !why.empty()) throw ParamError("dt", why);
 }
 
-void DsmcModel::setParams(const ParamValues& values) {
-    DsmcParams next = withValues(params_, DsmcParams::fields(), values);
-    next.validate();
-    if (const std::string why = nuDtRefusal(next); !why.empty()) throw ParamError("dt", why);
-    params_ = next;
+void DsmcModel::paramsChanged(const DsmcParams& /*before*/) {
     collisions_ = CollisionModel::fromParams(params_);
 }
 
-void DsmcModel::reset(const Preset& preset) {
-    if (preset.model != kind())
-        throw PresetError("model", "preset is for model '" + preset.model + "', not dsmc");
-    if (!preset.obstacles.empty()) throw PresetError("obstacles", "a DSMC cell has no obstacles");
-    DsmcParams next;
-    try {
-        next = withValues(DsmcParams{}, DsmcParams::fields(), preset.params);
-        next.validate();
-    } catch (const ParamError& e) {
-        throw PresetError("params." + e.key(), e.what());
-    }
-    const DsmcParams previous = params_;
-    const std::uint64_t previousSeed = seed_;
-    params_ = next;
-    seed_ = preset.seed;
-    reset();
-    if (const std::string why = nuDtRefusal(params_); !why.empty()) {
-        params_ = previous; // a refused preset leaves the model as it was
-        seed_ = previousSeed;
-        reset();
+void DsmcModel::checkObstacles(const DsmcParams& /*next*/, const std::vector<Obstacle>& obstacles) const {
+    if (!obstacles.empty()) throw PresetError("obstacles", "a DSMC cell has no obstacles");
+}
+
+void DsmcModel::checkBuiltState() const {
+    // ν Δt needs the built state's (σ c_r)_max; a refused preset leaves the model as it was.
+    if (const std::string why = nuDtRefusal(params_); !why.empty())
         throw PresetError("params.dt", withKeys(why));
-    }
 }
 
 double DsmcModel::nuDtBound(const DsmcParams& p) const {
@@ -94,24 +76,14 @@ std::string DsmcModel::accuracyWarning() const {
 
 void DsmcModel::reset() {
     collisions_ = CollisionModel::fromParams(params_);
-    step_ = 0;
-    time_ = 0.0;
+    restartClock();
     remainder_ = 0.0;
     candidates_ = collisionsThisStep_ = collisionsTotal_ = 0;
-    failure_.reset();
     buildInitialState();
     if (params_.sigmaCrMaxInit > 0)
         sigmaCrMax_ = params_.sigmaCrMaxInit;
     else
         estimateSigmaCrMax();
-}
-
-Preset DsmcModel::toPreset() const {
-    Preset p;
-    p.model = kind();
-    p.seed = seed_;
-    p.params = params();
-    return p;
 }
 
 double DsmcModel::numberDensity() const {
@@ -141,8 +113,8 @@ void DsmcModel::step() {
     if (failure_) return;
     const auto n = static_cast<std::uint32_t>(state_.size());
     const double dt = params_.dt;
-    // NTC candidates (physics.md §2, Bird 1994 eq. 11.3): ½ N (N − 1) F_N (σ c_r)_max Δt / V_c, the
-    // fractional part carried to the next step so the long-run rate has no rounding bias.
+    // NTC candidates (docs/dsmc.md#ntc-candidate-pairs, Bird 1994 eq. 11.3): ½ N (N − 1) F_N (σ c_r)_max Δt /
+    // V_c, the fractional part carried to the next step so the long-run rate has no rounding bias.
     const double wanted =
         0.5 * n * (n - 1.0) * params_.fn * sigmaCrMax_ * dt / params_.cellVolume + remainder_;
     // (σ c_r)_max only grows during a run, and with it the candidates: a run accepted at its start can
@@ -198,20 +170,20 @@ void DsmcModel::writeParticles(std::ostream& out) const {
 SceneView DsmcModel::sceneView() const {
     // A 0D cell has no positions worth drawing: the particles are points in velocity space (v_x, v_y).
     SceneView view;
-    const double half = params_.histSpeedMax;
+    const double half = params_.histogramSpeedMax;
     view.left = view.bottom = -half;
     view.right = view.top = half;
     view.xLabel = "v_x [m/s]";
     view.yLabel = "v_y [m/s]";
     view.colours = ColourMap::Category;
     view.colourLabel = "population";
-    if (params_.initial == "two-beams") {
+    if (params_.initial == DsmcInitialState::TwoBeams) {
         std::ostringstream one, two;
-        one << "beam 1 (" << params_.drift1 << " m/s)";
-        two << "beam 2 (" << params_.drift2 << " m/s)";
+        one << "beam 1 (" << params_.driftA << " m/s)";
+        two << "beam 2 (" << params_.driftB << " m/s)";
         view.categories = {one.str(), two.str()};
     } else {
-        view.categories = {params_.initial == "bkw" ? "BKW gas" : "Maxwellian gas"};
+        view.categories = {params_.initial == DsmcInitialState::Bkw ? "BKW gas" : "Maxwellian gas"};
     }
     const std::size_t n = state_.size();
     view.x.resize(n);

@@ -7,6 +7,7 @@
 #include "DsmcParams.h"
 #include "DsmcState.h"
 #include "common/Model.h"
+#include "common/ModelBase.h"
 
 namespace pl {
 
@@ -23,22 +24,17 @@ struct DsmcObservables {
     double collisionsPerParticle = 0;
 };
 
-class DsmcModel : public Model {
+// Parameters, presets and the clock come from ModelBase (common/ModelBase.h); this class holds the NTC
+// method.
+class DsmcModel : public ModelBase<DsmcParams> {
 public:
     DsmcModel();
 
     std::string kind() const override { return "dsmc"; }
-    const std::vector<ParamSpec>& paramSpecs() const override { return DsmcParams::describe(); }
-    ParamValues params() const override;
-    void setParams(const ParamValues& values) override;
-    void reset(const Preset& preset) override;
+    using ModelBase::reset;
     void reset() override;
-    Preset toPreset() const override;
     void step() override;
-    std::int64_t stepCount() const override { return step_; }
-    double time() const override { return time_; }
     std::size_t particleCount() const override { return state_.size(); }
-    std::optional<ModelFailure> failure() const override { return failure_; }
     std::string accuracyWarning() const override;
     std::int64_t plannedSteps() const override { return params_.runSteps; }
     bool reversible() const override { return false; }
@@ -51,7 +47,6 @@ public:
     void restoreState(const StateRecord& state) override;
 
     // DSMC-specific API
-    const DsmcParams& parameters() const { return params_; }
     const DsmcState& state() const { return state_; }
     DsmcObservables observe() const;
     const CollisionModel& collisionModel() const { return collisions_; }
@@ -59,6 +54,12 @@ public:
     long long lastCollisions() const { return collisionsThisStep_; }
 
 private:
+    // ModelBase's hooks: ν Δt bounds the parameters and presets (refused above kRefusedNuDt).
+    void refuseParams(const DsmcParams& next) const override;
+    void paramsChanged(const DsmcParams& before) override;
+    void checkObstacles(const DsmcParams& next, const std::vector<Obstacle>& obstacles) const override;
+    void checkBuiltState() const override;
+
     void buildInitialState();
     void addPopulation(long long count, double drift, std::uint8_t origin, std::uint32_t stream);
     void addBkwPopulation(long long count);
@@ -69,16 +70,11 @@ private:
     // Empty when p keeps ν_max Δt within what a step can do, else why not and what to change.
     std::string nuDtRefusal(const DsmcParams& p) const;
 
-    DsmcParams params_;
-    std::uint64_t seed_ = 1;
     CollisionModel collisions_;
     DsmcState state_;
     double sigmaCrMax_ = 0.0;
     double remainder_ = 0.0; // fractional candidate carried to the next step (NTC)
     long long candidates_ = 0, collisionsThisStep_ = 0, collisionsTotal_ = 0;
-    std::int64_t step_ = 0;
-    double time_ = 0.0;
-    std::optional<ModelFailure> failure_;
 };
 
 } // namespace pl

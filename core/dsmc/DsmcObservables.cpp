@@ -1,6 +1,7 @@
 // Observables of the cell: temperatures about the mean velocity, kurtosis, normalised moments with the
 // exact BKW curves, the KL divergence to Maxwell–Boltzmann, the NTC counters, and the histograms.
 #include "DsmcModel.h"
+#include "DsmcSeries.h"
 #include "DsmcTheory.h"
 
 #include <cmath>
@@ -59,7 +60,8 @@ DsmcObservables DsmcModel::observe() const {
     o.m4 = s2 > 0 ? c4 * inv / (eq4 * s2 * s2) : kNaN;
     o.m6 = s2 > 0 ? c6 * inv / (eq6 * s2 * s2 * s2) : kNaN;
     o.m8 = s2 > 0 ? c8 * inv / (eq8 * s2 * s2 * s2 * s2) : kNaN;
-    if (!planar && params_.initial == "bkw" && collisions_.kind == CollisionModel::Kind::Maxwell) {
+    if (!planar && params_.initial == DsmcInitialState::Bkw &&
+        collisions_.kind == CollisionModel::Kind::Maxwell) {
         // Time in mean collision times: ν = n σ c_r, the same at every temperature for Maxwell molecules.
         const double K = dsmc::bkwK(numberDensity() * collisions_.prefactor * time_);
         o.m4Bkw = dsmc::bkwMomentRatio(2, K);
@@ -92,67 +94,55 @@ DsmcObservables DsmcModel::observe() const {
     return o;
 }
 
+const SeriesTable<DsmcSeriesRow>& dsmcSeriesTable() {
+    using R = DsmcSeriesRow;
+    static const SeriesTable<R> table{
+        {{"step", "", "step"}, [](const R& r) { return static_cast<double>(r.observed.step); }},
+        {{"time", "s", "time"}, [](const R& r) { return r.observed.time; }},
+        {{"particles", "", "simulators"},
+         [](const R& r) { return static_cast<double>(r.observed.particles); }},
+        {{"Tx", "K", "T_x"}, [](const R& r) { return r.observed.tx; }},
+        {{"Ty", "K", "T_y"}, [](const R& r) { return r.observed.ty; }},
+        {{"Tz", "K", "T_z"}, [](const R& r) { return r.observed.tz; }},
+        {{"T", "K", "temperature"}, [](const R& r) { return r.observed.t; }},
+        {{"T_perp", "K", "T_⊥"}, [](const R& r) { return r.observed.tPerp; }},
+        {{"anisotropy", "K", "T_x − T_⊥"}, [](const R& r) { return r.observed.tx - r.observed.tPerp; }},
+        {{"ux", "m/s", "mean velocity x"}, [](const R& r) { return r.observed.ux; }},
+        {{"uy", "m/s", "mean velocity y"}, [](const R& r) { return r.observed.uy; }},
+        {{"uz", "m/s", "mean velocity z"}, [](const R& r) { return r.observed.uz; }},
+        {{"kurtosis_vx", "", "kurtosis of v_x (3 for a Maxwellian)"},
+         [](const R& r) { return r.observed.kurtosisVx; }},
+        {{"ng", "", "candidate pairs ng"}, [](const R& r) { return static_cast<double>(r.candidates); }},
+        {{"nc", "", "collisions nc"}, [](const R& r) { return static_cast<double>(r.collisions); }},
+        {{"sigma_cr_max", "m³/s", "(σ c_r)_max"}, [](const R& r) { return r.sigmaCrMax; }},
+        {{"M4", "", "M4 / M4(eq)"}, [](const R& r) { return r.observed.m4; }},
+        {{"M6", "", "M6 / M6(eq)"}, [](const R& r) { return r.observed.m6; }},
+        {{"M8", "", "M8 / M8(eq)"}, [](const R& r) { return r.observed.m8; }},
+        {{"M4_bkw", "", "M4 exact (BKW)"}, [](const R& r) { return r.observed.m4Bkw; }},
+        {{"M6_bkw", "", "M6 exact (BKW)"}, [](const R& r) { return r.observed.m6Bkw; }},
+        {{"M8_bkw", "", "M8 exact (BKW)"}, [](const R& r) { return r.observed.m8Bkw; }},
+        {{"kl_divergence", "nats", "KL divergence to Maxwell–Boltzmann"},
+         [](const R& r) { return r.observed.klDivergence; }},
+        {{"collisions_per_particle", "", "collisions per simulator"},
+         [](const R& r) { return r.observed.collisionsPerParticle; }},
+    };
+    return table;
+}
+
 std::vector<std::string> DsmcModel::seriesColumns() const {
-    return {"step",
-            "time",
-            "particles",
-            "Tx",
-            "Ty",
-            "Tz",
-            "T",
-            "T_perp",
-            "anisotropy",
-            "ux",
-            "uy",
-            "uz",
-            "kurtosis_vx",
-            "ng",
-            "nc",
-            "sigma_cr_max",
-            "M4",
-            "M6",
-            "M8",
-            "M4_bkw",
-            "M6_bkw",
-            "M8_bkw",
-            "kl_divergence",
-            "collisions_per_particle"};
+    return dsmcSeriesTable().names();
 }
 
 std::vector<double> DsmcModel::sampleSeries() {
-    const DsmcObservables o = observe();
-    return {static_cast<double>(o.step),
-            o.time,
-            static_cast<double>(o.particles),
-            o.tx,
-            o.ty,
-            o.tz,
-            o.t,
-            o.tPerp,
-            o.tx - o.tPerp,
-            o.ux,
-            o.uy,
-            o.uz,
-            o.kurtosisVx,
-            static_cast<double>(candidates_),
-            static_cast<double>(collisionsThisStep_),
-            sigmaCrMax_,
-            o.m4,
-            o.m6,
-            o.m8,
-            o.m4Bkw,
-            o.m6Bkw,
-            o.m8Bkw,
-            o.klDivergence,
-            o.collisionsPerParticle};
+    return dsmcSeriesTable().sample({observe(), candidates_, collisionsThisStep_, sigmaCrMax_});
 }
 
 std::vector<NamedHistogram> DsmcModel::histograms() const {
     const DsmcObservables o = observe();
     const double sigma2 = kBoltzmann * o.t / params_.mass();
     const double drift = std::sqrt(o.ux * o.ux + o.uy * o.uy + o.uz * o.uz);
-    const double vmax = params_.histSpeedMax;
-    const auto bins = static_cast<std::size_t>(params_.histBins);
+    const double vmax = params_.histogramSpeedMax;
+    const auto bins = static_cast<std::size_t>(params_.histogramBins);
     std::ostringstream summary;
     summary.precision(4);
     summary << "T = " << o.t << " K, u_x = " << o.ux << " m/s, " << o.collisionsPerParticle

@@ -16,17 +16,17 @@ double DsmcParams::mass() const {
 void DsmcParams::validate() const {
     const long long n = totalCount();
     if (n < 2)
-        throw ParamError("count_1",
-                         "a DSMC cell needs at least 2 particles to collide ({count_1} + {count_2} = " +
+        throw ParamError("count_a",
+                         "a DSMC cell needs at least 2 particles to collide ({count_a} + {count_b} = " +
                              std::to_string(n) + ")");
     if (static_cast<double>(n) > kMaxParticles)
-        throw ParamError("count_1", std::to_string(n) + " particles exceed the limit of " +
+        throw ParamError("count_a", std::to_string(n) + " particles exceed the limit of " +
                                         std::to_string(static_cast<long long>(kMaxParticles)));
     if (velocityComponents != 2 && velocityComponents != 3)
         throw ParamError("velocity_components",
                          "'{velocity_components}' must be 2 (in the plane) or 3 (in space), not " +
                              std::to_string(velocityComponents));
-    if (planar() && initial == "bkw")
+    if (planar() && initial == DsmcInitialState::Bkw)
         throw ParamError("velocity_components",
                          "the BKW solution is for 3 velocity components; use 3, or another initial state");
 }
@@ -52,11 +52,12 @@ const std::vector<ParamField<DsmcParams>>& DsmcParams::fields() {
             bindInteger(&P::runSteps, makeSpec("run_steps", "Run length", "steps", "Gas and cell",
                                                "The run stops after this many steps (seed 500); 0 runs on.",
                                                0, 1e12, 100, double(d.runSteps), true)));
-        f.push_back(bindText(&P::crossSection,
-                             makeChoice("cross_section", "Cross-section", "Collisions",
-                                        "seed: σ = 1e-18 c_r^-1/2 m² as written; hard-sphere: σ = π d²; vhs: "
-                                        "variable hard sphere (d_ref, T_ref, ω); maxwell: σ c_r constant.",
-                                        {"seed", "hard-sphere", "vhs", "maxwell"}, true)));
+        f.push_back(bindChoice(&P::crossSection,
+                               makeChoice("cross_section", "Cross-section", "Collisions",
+                                          "seed: σ = 1e-18 c_r^-1/2 m² as written; hard-sphere: σ = π d²; "
+                                          "vhs: variable hard sphere (d_ref, T_ref, ω); maxwell: σ c_r "
+                                          "constant.",
+                                          true)));
         f.push_back(bindReal(&P::diameter, makeSpec("diameter", "Hard-sphere diameter", "m", "Collisions",
                                                     "Molecular diameter of the hard-sphere model.", 1e-12,
                                                     1e-6, 0, d.diameter, true)));
@@ -85,36 +86,51 @@ const std::vector<ParamField<DsmcParams>>& DsmcParams::fields() {
                      "plane, like the 2D disk gas (for comparing the two).",
                      2, 3, 1, double(d.velocityComponents))));
         f.push_back(
-            bindText(&P::initial, makeChoice("initial", "Initial state", "Initial state",
-                                             "two-beams: the seed's beams along x; maxwellian: one gas at "
-                                             "rest; bkw: the BKW initial distribution (K₀ = 0.6).",
-                                             {"two-beams", "maxwellian", "bkw"})));
-        f.push_back(bindInteger(&P::count1, makeSpec("count_1", "Particles (beam 1)", "", "Initial state",
+            bindChoice(&P::initial, makeChoice("initial", "Initial state", "Initial state",
+                                               "two-beams: the seed's beams along x; maxwellian: one gas at "
+                                               "rest; bkw: the BKW initial distribution (K₀ = 0.6).")));
+        f.push_back(bindInteger(&P::countA, makeSpec("count_a", "Particles (beam 1)", "", "Initial state",
                                                      "Simulated particles of beam 1, or of the single gas.",
-                                                     0, kMaxParticles, 100, double(d.count1))));
-        f.push_back(bindInteger(&P::count2, makeSpec("count_2", "Particles (beam 2)", "", "Initial state",
+                                                     0, kMaxParticles, 100, double(d.countA))));
+        f.push_back(bindInteger(&P::countB, makeSpec("count_b", "Particles (beam 2)", "", "Initial state",
                                                      "Simulated particles of beam 2 (two-beams only).", 0,
-                                                     kMaxParticles, 100, double(d.count2))));
-        f.push_back(bindReal(&P::drift1,
-                             makeSpec("drift_1", "Beam 1 velocity", "m/s", "Initial state",
-                                      "Velocity of beam 1 along x (seed 100).", -1e6, 1e6, 10, d.drift1)));
-        f.push_back(bindReal(&P::drift2,
-                             makeSpec("drift_2", "Beam 2 velocity", "m/s", "Initial state",
-                                      "Velocity of beam 2 along x (seed 300).", -1e6, 1e6, 10, d.drift2)));
+                                                     kMaxParticles, 100, double(d.countB))));
+        f.push_back(bindReal(&P::driftA,
+                             makeSpec("drift_a", "Beam 1 velocity", "m/s", "Initial state",
+                                      "Velocity of beam 1 along x (seed 100).", -1e6, 1e6, 10, d.driftA)));
+        f.push_back(bindReal(&P::driftB,
+                             makeSpec("drift_b", "Beam 2 velocity", "m/s", "Initial state",
+                                      "Velocity of beam 2 along x (seed 300).", -1e6, 1e6, 10, d.driftB)));
         f.push_back(
             bindReal(&P::temperature, makeSpec("temperature", "Temperature", "K", "Initial state",
                                                "Temperature of each beam, or of the single gas (seed 5).",
                                                1e-6, 1e7, 1, d.temperature)));
+        f.push_back(bindReal(&P::histogramSpeedMax,
+                             makeSpec("histogram_speed_max", "Histogram range", "m/s", "Observation",
+                                      "Upper end of the speed histogram (seed 450).", 1e-3, 1e8, 10,
+                                      d.histogramSpeedMax, true)));
         f.push_back(
-            bindReal(&P::histSpeedMax, makeSpec("hist_speed_max", "Histogram range", "m/s", "Observation",
-                                                "Upper end of the speed histogram (seed 450).", 1e-3, 1e8, 10,
-                                                d.histSpeedMax, true)));
-        f.push_back(bindInteger(&P::histBins, makeSpec("hist_bins", "Histogram bins", "", "Observation",
-                                                       "Bins of the speed histogram (seed 25).", 2, 10000, 5,
-                                                       double(d.histBins), true)));
+            bindInteger(&P::histogramBins, makeSpec("histogram_bins", "Histogram bins", "", "Observation",
+                                                    "Bins of the speed histogram (seed 25).", 2, 10000, 5,
+                                                    double(d.histogramBins), true)));
         return f;
     }();
     return list;
+}
+
+const ChoiceTable<DsmcCrossSection>& choiceTable(DsmcCrossSection) {
+    static const ChoiceTable<DsmcCrossSection> table{{DsmcCrossSection::Seed, "seed"},
+                                                     {DsmcCrossSection::HardSphere, "hard-sphere"},
+                                                     {DsmcCrossSection::Vhs, "vhs"},
+                                                     {DsmcCrossSection::Maxwell, "maxwell"}};
+    return table;
+}
+
+const ChoiceTable<DsmcInitialState>& choiceTable(DsmcInitialState) {
+    static const ChoiceTable<DsmcInitialState> table{{DsmcInitialState::TwoBeams, "two-beams"},
+                                                     {DsmcInitialState::Maxwellian, "maxwellian"},
+                                                     {DsmcInitialState::Bkw, "bkw"}};
+    return table;
 }
 
 const std::vector<ParamSpec>& DsmcParams::describe() {

@@ -8,6 +8,14 @@
 
 namespace pl {
 
+// σ c_r as a function of c_r: the seed's σ = 1e-18 c_r^-1/2 m², hard spheres, VHS or Maxwell molecules.
+enum class DsmcCrossSection { Seed, HardSphere, Vhs, Maxwell };
+// The initial velocities: the seed's two beams along x, one Maxwellian gas at rest, or the BKW state.
+enum class DsmcInitialState { TwoBeams, Maxwellian, Bkw };
+// The names of each choice as preset files and the command line spell them.
+const ChoiceTable<DsmcCrossSection>& choiceTable(DsmcCrossSection);
+const ChoiceTable<DsmcInitialState>& choiceTable(DsmcInitialState);
+
 struct DsmcParams {
     // Gas and cell (the seed: O2, F_N = 5e8, V_c = 1e-8 m³, Δt = 2e-5 s, 500 steps)
     double massAmu = 32.0;    // molecular mass [u]
@@ -17,32 +25,32 @@ struct DsmcParams {
     long long runSteps = 500; // the run stops here (as the seed does); 0 runs on
 
     // Collision model: σ c_r as a function of the relative speed c_r
-    std::string crossSection = "seed"; // seed | hard-sphere | vhs | maxwell
-    double diameter = 4.07e-10;        // hard-sphere diameter [m]
-    double vhsDiameter = 4.07e-10;     // VHS reference diameter d_ref [m] (O2, Bird 1994 App. A)
-    double vhsTref = 273.0;            // VHS reference temperature [K]
-    double vhsOmega = 0.77;            // VHS viscosity index ω (O2)
-    double maxwellSigmaCr = 1.5e-17;   // σ c_r of Maxwell molecules [m³/s]
-    double sigmaCrMaxInit = 0.0;       // first (σ c_r)_max [m³/s]; 0: estimated from the initial state
+    DsmcCrossSection crossSection = DsmcCrossSection::Seed;
+    double diameter = 4.07e-10;      // hard-sphere diameter [m]
+    double vhsDiameter = 4.07e-10;   // VHS reference diameter d_ref [m] (O2, Bird 1994 App. A)
+    double vhsTref = 273.0;          // VHS reference temperature [K]
+    double vhsOmega = 0.77;          // VHS viscosity index ω (O2)
+    double maxwellSigmaCr = 1.5e-17; // σ c_r of Maxwell molecules [m³/s]
+    double sigmaCrMaxInit = 0.0;     // first (σ c_r)_max [m³/s]; 0: estimated from the initial state
     // 3: isotropic scattering in space (a real gas); 2: velocities and scattering in the plane, the
     // velocity space of the 2D disk gas (the methods lab compares the two on one observable)
     long long velocityComponents = 3;
 
     // Initial state
-    std::string initial = "two-beams"; // two-beams | maxwellian | bkw
-    long long count1 = 1000;           // beam 1 (or all particles of a single population)
-    long long count2 = 1000;           // beam 2 (two-beams only)
-    double drift1 = 100.0;             // beam 1 velocity along x [m/s]
-    double drift2 = 300.0;             // beam 2 velocity along x [m/s]
-    double temperature = 5.0;          // of each beam, or of the Maxwellian / BKW state [K]
+    DsmcInitialState initial = DsmcInitialState::TwoBeams;
+    long long countA = 1000;  // beam 1 (or all particles of a single population)
+    long long countB = 1000;  // beam 2 (two-beams only)
+    double driftA = 100.0;    // beam 1 velocity along x [m/s]
+    double driftB = 300.0;    // beam 2 velocity along x [m/s]
+    double temperature = 5.0; // of each beam, or of the Maxwellian / BKW state [K]
 
     // Observation
-    double histSpeedMax = 450.0; // speed histogram range [0, max] [m/s] (seed: 0–450, 25 bins)
-    long long histBins = 25;
+    double histogramSpeedMax = 450.0; // speed histogram range [0, max] [m/s] (seed: 0–450, 25 bins)
+    long long histogramBins = 25;
 
     double mass() const; // [kg]
     bool planar() const { return velocityComponents == 2; }
-    long long totalCount() const { return initial == "two-beams" ? count1 + count2 : count1; }
+    long long totalCount() const { return initial == DsmcInitialState::TwoBeams ? countA + countB : countA; }
     // Cross-field checks; throws ParamError naming the key.
     void validate() const;
 

@@ -7,8 +7,7 @@ namespace pl {
 
 StateRecord DsmcModel::saveState() const {
     StateRecord r;
-    r.put("step", static_cast<double>(step_));
-    r.put("time", time_);
+    saveClock(r);
     r.put("sigma_cr_max", sigmaCrMax_);
     r.put("remainder", remainder_);
     r.put("candidates", static_cast<double>(candidates_));
@@ -31,15 +30,13 @@ void DsmcModel::restoreState(const StateRecord& r) {
     s.vy = r.array<double>("vy", n);
     s.vz = r.array<double>("vz", n);
     s.origin = r.array<std::uint8_t>("origin", n);
-    step_ = static_cast<std::int64_t>(r.scalar("step"));
-    time_ = r.scalar("time");
+    restoreClock(r);
     sigmaCrMax_ = r.scalar("sigma_cr_max");
     remainder_ = r.scalar("remainder");
     candidates_ = static_cast<long long>(r.scalar("candidates"));
     collisionsThisStep_ = static_cast<long long>(r.scalar("collisions_this_step"));
     collisionsTotal_ = static_cast<long long>(r.scalar("collisions_total"));
     state_ = std::move(s);
-    failure_.reset();
 }
 
 } // namespace pl

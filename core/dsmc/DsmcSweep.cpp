@@ -16,7 +16,7 @@ DsmcCell runDsmcCell(const Preset& base, long long particles, double nuDt, const
         DsmcModel model;
         model.reset(base);
         const DsmcParams& p = model.parameters();
-        if (p.initial != "bkw" || p.crossSection != "maxwell")
+        if (p.initial != DsmcInitialState::Bkw || p.crossSection != DsmcCrossSection::Maxwell)
             throw std::invalid_argument(
                 "the DSMC sweep measures against BKW: it needs Maxwell molecules from "
                 "the BKW start (the dsmc-bkw preset)");
@@ -24,7 +24,7 @@ DsmcCell runDsmcCell(const Preset& base, long long particles, double nuDt, const
         if (!(nuDt > 0)) throw std::invalid_argument("ν dt must be positive");
         Preset preset = base;
         const double density = model.numberDensity();
-        preset.params["count_1"] = static_cast<double>(particles);
+        preset.params["count_a"] = static_cast<double>(particles);
         preset.params["fn"] = density * p.cellVolume / static_cast<double>(particles);
         preset.params["run_steps"] = 0.0;
         const double nu = density * model.collisionModel().prefactor; // n σ c_r, Maxwell molecules

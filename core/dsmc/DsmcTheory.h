@@ -1,5 +1,5 @@
-// Exact results the DSMC cell is checked against (physics.md §2): equilibrium collision rates, the
-// Maxwellian speed density (also of a drifting gas), and the BKW solution's moments.
+// Exact results the DSMC cell is checked against (docs/dsmc.md#reference-formulas): equilibrium collision
+// rates, the Maxwellian speed density (also of a drifting gas), and the BKW solution's moments.
 #pragma once
 
 namespace pl::dsmc {

@@ -1,8 +1,7 @@
 // Backend factory: CPU reference or GPU model, with a clear message whenever the GPU is not used.
 #include "Backends.h"
 
-#include "MdModelGL.h"
-#include "PbfModelGL.h"
+#include "GpuModels.h"
 #include "catalog/ModelCatalog.h"
 
 #include <limits>
@@ -35,7 +34,7 @@ const std::vector<std::string>& backendNames() {
 }
 
 bool hasGpuModel(const std::string& kind) {
-    return kind == "gas" || kind == "fluid";
+    return findGpuModel(kind) != nullptr;
 }
 
 std::size_t autoGpuThreshold(const ContextInfo& info) {
@@ -46,28 +45,23 @@ std::size_t autoGpuThreshold(const ContextInfo& info) {
 
 namespace {
 
-std::unique_ptr<Model> makeGpuModel(const std::string& kind, std::shared_ptr<GlContext> context) {
-    if (kind == "gas") return std::make_unique<MdModelGL>(std::move(context));
-    return std::make_unique<PbfModelGL>(std::move(context)); // hasGpuModel(kind) holds
-}
-
-} // namespace
-
-BackendChoice createModel(const std::string& kind, Backend backend, const Preset* preset,
-                          std::shared_ptr<GlContext> context) {
+// preset null: the kind's defaults (its CPU model as constructed; a GPU model reset to defaultPreset).
+BackendChoice create(const ModelDescriptor& descriptor, Backend backend, const Preset* preset,
+                     std::shared_ptr<GlContext> context) {
     BackendChoice choice;
     auto cpu = [&] {
-        choice.model = preset ? instantiate(*preset) : pl::createModel(kind);
+        choice.model = preset ? instantiate(*preset) : descriptor.create();
         choice.backend = Backend::Cpu;
     };
+    const GpuModel* gpu = findGpuModel(descriptor.kind);
     if (backend == Backend::Cpu) {
         cpu();
         return choice;
     }
-    if (!hasGpuModel(kind)) {
+    if (!gpu) {
         cpu();
         if (backend == Backend::Gl)
-            choice.message = "the " + kind + " scene has no GPU model: it runs on the CPU";
+            choice.message = "the " + descriptor.kind + " scene has no GPU model: it runs on the CPU";
         return choice;
     }
     try {
@@ -77,17 +71,15 @@ BackendChoice createModel(const std::string& kind, Backend backend, const Preset
         choice.message = std::string("GPU backend unavailable, running on the CPU: ") + e.what();
         return choice;
     }
-    if (backend == Backend::Auto) {
+    const Preset defaults = preset ? Preset{} : defaultPreset(descriptor);
+    const Preset& target = preset ? *preset : defaults;
+    if (backend == Backend::Auto && particleCount(target) < autoGpuThreshold(context->info())) {
         cpu();
-        const std::size_t threshold = autoGpuThreshold(context->info());
-        if (choice.model->particleCount() < threshold) return choice;
+        return choice;
     }
     try {
-        auto model = makeGpuModel(kind, context);
-        if (preset) model->reset(*preset);
-        choice.model = std::move(model);
+        choice.model = gpu->create(context, target);
         choice.backend = Backend::Gl;
-        choice.message.clear();
     } catch (const PresetError&) {
         throw;
     } catch (const std::exception& e) { // a shader that does not build on this driver, out of memory
@@ -95,6 +87,23 @@ BackendChoice createModel(const std::string& kind, Backend backend, const Preset
         choice.message = std::string("GPU backend failed, running on the CPU: ") + e.what();
     }
     return choice;
+}
+
+const ModelDescriptor& registered(const std::string& kind) {
+    const ModelDescriptor* descriptor = findModel(kind);
+    if (!descriptor) throw PresetError("model", "unknown model \"" + kind + "\"");
+    return *descriptor;
+}
+
+} // namespace
+
+BackendChoice createModel(const Preset& preset, Backend backend, std::shared_ptr<GlContext> context) {
+    return create(registered(preset.model), backend, &preset, std::move(context));
+}
+
+BackendChoice createModel(const std::string& kind, Backend backend, const Preset* preset,
+                          std::shared_ptr<GlContext> context) {
+    return create(registered(preset ? preset->model : kind), backend, preset, std::move(context));
 }
 
 } // namespace pl::gl

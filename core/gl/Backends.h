@@ -16,7 +16,7 @@ Backend backendFromName(const std::string& name); // "cpu", "gl", "auto"; throws
 std::string backendName(Backend backend);
 const std::vector<std::string>& backendNames();
 
-// Kinds that have a GPU model.
+// Kinds that have a GPU model (GpuModels.cpp).
 bool hasGpuModel(const std::string& kind);
 
 // Particles from which the GPU model is worth its hand-over costs on this context: a software
@@ -29,10 +29,15 @@ struct BackendChoice {
     std::string message;            // why, when it is not what was asked for (empty otherwise)
 };
 
-// A model of kind on the asked backend, reset to preset (when given). For Gl and Auto the shared
-// headless context is used unless context is given; a missing GL 4.3 context gives the CPU model and a
-// message, never an exception. Auto picks the GPU when the preset's particle count reaches the
-// threshold. Throws PresetError for a bad preset, like instantiate().
+// A model reset to preset on the asked backend: the one factory of the CLI, the UI and the bench. For
+// Gl and Auto the shared headless context is used unless context is given; a missing GL 4.3 context gives
+// the CPU model and a message, never an exception. Auto picks the GPU when the preset's particle count
+// (from its parameters, pl::particleCount) reaches the threshold. Throws PresetError for a bad preset,
+// like instantiate().
+BackendChoice createModel(const Preset& preset, Backend backend,
+                          std::shared_ptr<GlContext> context = nullptr);
+// The same for a model of kind, reset to preset when given, else to the kind's defaults. Throws
+// PresetError for an unknown kind.
 BackendChoice createModel(const std::string& kind, Backend backend, const Preset* preset = nullptr,
                           std::shared_ptr<GlContext> context = nullptr);
 

@@ -189,22 +189,42 @@ void ComputeProgram::dispatch(std::size_t items, unsigned localSize) const {
 
 Buffer::~Buffer() {
     if (id_) glDeleteBuffers(1, &id_);
+    if (staging_) glDeleteBuffers(1, &staging_);
 }
 
 Buffer& Buffer::operator=(Buffer&& other) noexcept {
     std::swap(id_, other.id_);
     std::swap(capacity_, other.capacity_);
+    std::swap(staging_, other.staging_);
+    std::swap(stagingCapacity_, other.stagingCapacity_);
     return *this;
 }
+
+namespace {
+bool hasImmutableStorage() {
+    static const bool has = epoxy_gl_version() >= 44 || epoxy_has_gl_extension("GL_ARB_buffer_storage");
+    return has;
+}
+} // namespace
 
 void Buffer::reserve(std::size_t bytes) {
     bytes = std::max<std::size_t>(bytes, 16);
     if (id_ && bytes <= capacity_) return;
-    if (!id_) glGenBuffers(1, &id_);
-    glBindBuffer(GL_SHADER_STORAGE_BUFFER, id_);
-    // DYNAMIC_COPY: written and read by the GPU. A DRAW hint lets a driver keep it where the CPU can
-    // write it cheaply, which is the wrong side for buffers the shaders stream through every step.
-    glBufferData(GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>(bytes), nullptr, GL_DYNAMIC_COPY);
+    if (hasImmutableStorage()) {
+        // Immutable storage that the CPU never maps: the driver keeps it in video memory. Growing
+        // means a new buffer (contents are undefined after growing anyway).
+        if (id_) glDeleteBuffers(1, &id_);
+        glGenBuffers(1, &id_);
+        glBindBuffer(GL_SHADER_STORAGE_BUFFER, id_);
+        glBufferStorage(GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>(bytes), nullptr,
+                        GL_DYNAMIC_STORAGE_BIT);
+    } else {
+        if (!id_) glGenBuffers(1, &id_);
+        glBindBuffer(GL_SHADER_STORAGE_BUFFER, id_);
+        // DYNAMIC_COPY: written and read by the GPU. A DRAW hint lets a driver keep it where the CPU can
+        // write it cheaply, which is the wrong side for buffers the shaders stream through every step.
+        glBufferData(GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>(bytes), nullptr, GL_DYNAMIC_COPY);
+    }
     if (glGetError() == GL_OUT_OF_MEMORY)
         throw std::runtime_error("the GPU has no room for a buffer of " + std::to_string(bytes) + " bytes");
     capacity_ = bytes;
@@ -218,9 +238,18 @@ void Buffer::upload(const void* data, std::size_t bytes, std::size_t offset) {
 
 void Buffer::download(void* data, std::size_t bytes, std::size_t offset) const {
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-    glBindBuffer(GL_SHADER_STORAGE_BUFFER, id_);
-    glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, static_cast<GLintptr>(offset),
-                       static_cast<GLsizeiptr>(bytes), data);
+    if (!staging_ || stagingCapacity_ < bytes) {
+        if (!staging_) glGenBuffers(1, &staging_);
+        glBindBuffer(GL_COPY_WRITE_BUFFER, staging_);
+        // STREAM_READ: written once by the GPU, read once by the CPU; the driver keeps it host-side.
+        glBufferData(GL_COPY_WRITE_BUFFER, static_cast<GLsizeiptr>(bytes), nullptr, GL_STREAM_READ);
+        stagingCapacity_ = bytes;
+    }
+    glBindBuffer(GL_COPY_READ_BUFFER, id_);
+    glBindBuffer(GL_COPY_WRITE_BUFFER, staging_);
+    glCopyBufferSubData(GL_COPY_READ_BUFFER, GL_COPY_WRITE_BUFFER, static_cast<GLintptr>(offset), 0,
+                        static_cast<GLsizeiptr>(bytes));
+    glGetBufferSubData(GL_COPY_WRITE_BUFFER, 0, static_cast<GLsizeiptr>(bytes), data);
 }
 
 void Buffer::fillZero(std::size_t bytes) {

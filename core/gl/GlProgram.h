@@ -71,6 +71,16 @@ private:
     std::unordered_map<std::string_view, Uniform> uniforms_;
 };
 
+// Blocks until every command issued so far in the current context is complete, on a fence (not glFinish):
+// another context (the viewport's) reads the buffers those commands wrote next.
+inline void waitUntilCommandsComplete() {
+    GLsync done = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
+    constexpr GLuint64 kSecondNs = 1000000000;
+    GLenum state = glClientWaitSync(done, GL_SYNC_FLUSH_COMMANDS_BIT, kSecondNs);
+    while (state == GL_TIMEOUT_EXPIRED) state = glClientWaitSync(done, 0, kSecondNs);
+    glDeleteSync(done);
+}
+
 // Memory barrier between dependent dispatches: on a real GPU they overlap otherwise.
 inline void storageBarrier() {
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
@@ -87,6 +97,9 @@ public:
 
     // Grows (never shrinks) to at least bytes; contents are undefined after growing.
     void reserve(std::size_t bytes);
+    // Reads go through a staging buffer: a driver that sees the CPU read a buffer may move it to host
+    // memory (NVIDIA reports "copied/moved from VIDEO memory to HOST memory"), after which every pass
+    // that streams through it crosses PCIe. The buffers the shaders use are never read by the CPU.
     void upload(const void* data, std::size_t bytes, std::size_t offset = 0);
     void download(void* data, std::size_t bytes, std::size_t offset = 0) const;
     void fillZero(std::size_t bytes);
@@ -107,6 +120,8 @@ public:
 private:
     GLuint id_ = 0;
     std::size_t capacity_ = 0;
+    mutable GLuint staging_ = 0; // where download() copies to before the CPU reads (host-side memory)
+    mutable std::size_t stagingCapacity_ = 0;
 };
 
 // Groups needed for items at localSize per group.

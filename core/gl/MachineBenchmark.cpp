@@ -13,17 +13,26 @@ namespace pl::gl {
 
 namespace {
 using Clock = std::chrono::steady_clock;
+constexpr double kSettleBatchSeconds = 0.1; // [s] one batch of the settling loop
+constexpr double kSettledTolerance = 0.03;  // two batches within 3 % of each other: settled
 
 double median(std::vector<double> v) {
     std::sort(v.begin(), v.end());
     return v.empty() ? 0.0 : v[v.size() / 2];
 }
 
-double secondsFor(Model& model, int steps) {
+struct BatchTime {
+    double seconds = 0; // issue and completion
+    double issueSeconds = 0;
+};
+
+BatchTime timeBatch(Model& model, int steps) {
     const auto start = Clock::now();
     for (int s = 0; s < steps; ++s) model.step();
+    const auto issued = Clock::now();
     model.finishPendingWork();
-    return std::chrono::duration<double>(Clock::now() - start).count();
+    return {std::chrono::duration<double>(Clock::now() - start).count(),
+            std::chrono::duration<double>(issued - start).count()};
 }
 } // namespace
 
@@ -42,7 +51,7 @@ Preset scaledGasPreset(std::size_t n) {
                 {"init_velocity", std::string("fixed-speed")},
                 {"init_speed", 1.0},
                 {"init_placement", std::string("random")},
-                {"integrator", std::string("velocity-verlet")},
+                {"integrator", mdIntegrator(MdIntegrator::VelocityVerlet).name},
                 {"dt", 1e-4},
                 {"max_particles", static_cast<double>(std::max<std::size_t>(n, 1))}};
     return p;
@@ -63,8 +72,8 @@ Preset scaledFluidPreset(std::size_t n) {
                 {"particle_radius", 0.2},
                 {"iterations", 5.0},
                 {"dt", 0.01},
-                {"world_width", 2.0 * side + 1.0},
-                {"world_height", 1.5 * side + 1.0},
+                {"box_width", 2.0 * side + 1.0},
+                {"box_height", 1.5 * side + 1.0},
                 {"fill_x0", 0.0},
                 {"fill_y0", 0.0},
                 {"fill_x1", side},
@@ -75,17 +84,36 @@ Preset scaledFluidPreset(std::size_t n) {
 
 BenchPoint timeModel(Model& model, const std::string& scene, const std::string& backend,
                      const BenchSettings& settings, const std::function<bool()>& cancel) {
-    BenchPoint point{scene, backend, model.particleCount()};
-    const double warm = secondsFor(model, settings.warmupSteps);
-    const double perStep = std::max(warm / std::max(settings.warmupSteps, 1), 1e-7);
+    BenchPoint point;
+    point.scene = scene;
+    point.backend = backend;
+    point.particles = model.particleCount();
+    const double warm = timeBatch(model, settings.warmupSteps).seconds;
+    double perStep = std::max(warm / std::max(settings.warmupSteps, 1), 1e-7);
+    // A GPU that idled (while the host built the initial state, or ran CPU models) runs its passes up to
+    // 3x slower for seconds after it is loaded again (BENCHMARKS.md, "The slow start of a GPU point"):
+    // keep stepping in short batches until two in a row agree, so the repeats time the steady state.
+    const auto settleStart = Clock::now();
+    for (double previous = 0.0;;) {
+        const int batch = std::max(settings.minSteps, static_cast<int>(kSettleBatchSeconds / perStep));
+        perStep = std::max(timeBatch(model, batch).seconds / batch, 1e-7);
+        const double elapsed = std::chrono::duration<double>(Clock::now() - settleStart).count();
+        if (std::abs(perStep - previous) < kSettledTolerance * perStep || elapsed > settings.maxSettleSeconds)
+            break;
+        previous = perStep;
+    }
+    point.settleSeconds = std::chrono::duration<double>(Clock::now() - settleStart).count();
     const int steps = std::max(settings.minSteps, static_cast<int>(settings.targetSeconds / perStep));
-    std::vector<double> rates;
+    std::vector<double> rates, issue;
     for (int r = 0; r < settings.repeats; ++r) {
         if (cancel && cancel()) return point;
-        const double seconds = secondsFor(model, steps);
-        rates.push_back(steps / seconds);
+        const BatchTime t = timeBatch(model, steps);
+        rates.push_back(steps / t.seconds);
+        point.repeatMicrosecondsPerStep.push_back(1e6 * t.seconds / steps);
+        issue.push_back(1e6 * t.issueSeconds / steps);
     }
     const double stepsPerSecond = median(rates);
+    point.issueMicrosecondsPerStep = median(issue);
     point.particleStepsPerSecond = stepsPerSecond * static_cast<double>(point.particles);
     point.microsecondsPerStep = 1e6 / stepsPerSecond;
     if (auto* gas = dynamic_cast<MdModelGL*>(&model)) point.dispatchesPerStep = gas->dispatchesLastStep();

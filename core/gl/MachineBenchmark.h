@@ -18,6 +18,11 @@ struct BenchPoint {
     double particleStepsPerSecond = 0; // median over repeats
     double microsecondsPerStep = 0;
     int dispatchesPerStep = 0; // GPU only
+    // Host time per step spent issuing the steps, before waiting for the GPU (median repeat): when it
+    // nears microsecondsPerStep, the CPU side is the limit.
+    double issueMicrosecondsPerStep = 0;
+    std::vector<double> repeatMicrosecondsPerStep; // each repeat, in order
+    double settleSeconds = 0;                      // [s] stepped before the repeats until the rate settled
 };
 
 // The seed's gas (velocity Verlet, d = 0.01, k = 1000, speed 1) with n disks at the seed's area fraction:
@@ -34,6 +39,7 @@ struct BenchSettings {
     double targetSeconds = 0.3;
     int minSteps = 20;
     int warmupSteps = 10;
+    double maxSettleSeconds = 1.0; // [s] the longest the rate may take to settle before the repeats
 };
 
 // Times one model: warm-up, then repeats of a batch; returns the median. cancel() is polled between

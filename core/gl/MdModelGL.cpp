@@ -1,6 +1,7 @@
-// MdModelGL: the integrators' table of contents as GPU dispatches, and the CPU ↔ GPU state hand-over.
+// MdModelGL: the integrator table's passes as GPU dispatches, and the CPU ↔ GPU state hand-over.
 #include "MdModelGL.h"
 
+#include "GlProgram.h"
 #include "GpuCellGrid.h"
 #include "GpuObstacles.h"
 #include "common/Statistics.h"
@@ -22,12 +23,10 @@ constexpr unsigned kFineBins = 4096;     // KS distance from a histogram this fi
 constexpr double kFineSigmas = 10.0;     // fine bins span 0 … 10 √(kT/m)
 constexpr double kParticlesPerCell = 2.0;
 constexpr std::int64_t kHealthInterval = 64; // as the CPU model's energy check
-const double kForestRuthTheta = 1.0 / (2.0 - std::cbrt(2.0));
 
 } // namespace
 
 struct MdGpu {
-    std::shared_ptr<GlContext> context;
     ComputeProgram drift{"md/md_drift.comp"}, driftSmall{"md/md_drift_small.comp"},
         forces{"md/md_forces.comp"}, observe{"md/md_observe.comp"}, histogram{"md/md_histogram.comp"};
     GpuCellGrid grid;
@@ -35,8 +34,6 @@ struct MdGpu {
     int current = 0;          // which of the ping-pong pairs holds the cell-ordered state
     double pendingKick = 0.0; // true velocity = vel + pendingKick · acc (the force pass does not kick)
     std::size_t count = 0;
-    bool gpuCurrent = false; // the GPU holds the latest state
-    bool cpuCurrent = true;  // state_ matches the GPU
     int dispatches = 0;
     bool profiling = false;
     std::vector<std::pair<std::string, GLuint>> marks;     // this step's timestamps
@@ -64,7 +61,6 @@ struct MdGpu {
         marks.clear();
     }
 
-    explicit MdGpu(std::shared_ptr<GlContext> c) : context(std::move(c)) {}
     void bindState() {
         pos[current].bind(0);
         vel[current].bind(1);
@@ -73,24 +69,29 @@ struct MdGpu {
     }
 };
 
-MdModelGL::MdModelGL(std::shared_ptr<GlContext> context) {
-    context->makeCurrent();
-    gpu_ = std::make_unique<MdGpu>(std::move(context));
+MdModelGL::MdModelGL(std::shared_ptr<GlContext> context) : GpuHandOver(std::move(context)) {
+    createBuffers();
+    reset();
+}
+
+MdModelGL::MdModelGL(std::shared_ptr<GlContext> context, const Preset& preset)
+    : GpuHandOver(std::move(context)) {
+    createBuffers();
+    reset(preset);
+}
+
+void MdModelGL::createBuffers() {
+    gpu_ = std::make_unique<MdGpu>();
     gpu_->status.reserve(4 * sizeof(std::uint32_t));
     gpu_->status.fillZero(16);
-    stateEdited();
 }
 
 MdModelGL::~MdModelGL() {
-    gpu_->context->makeCurrent(); // buffers and programs are deleted in their context
+    context_->makeCurrent(); // buffers and programs are deleted in their context
 }
 
 bool MdModelGL::stepsOnGpu() const {
-    return integrator_ != MdIntegrator::RungeKutta4 && params_.forceMethod != "all-pairs";
-}
-
-const ContextInfo& MdModelGL::contextInfo() const {
-    return gpu_->context->info();
+    return mdIntegrator(integrator_).onlyKicksAndDrifts() && params_.forceMethod != MdForceMethod::AllPairs;
 }
 
 int MdModelGL::dispatchesLastStep() const {
@@ -108,9 +109,9 @@ std::vector<std::pair<std::string, double>> MdModelGL::profile() const {
 
 SceneView MdModelGL::sceneViewSharingGpu() const {
     const MdGpu& g = *gpu_;
-    if (!g.context->sharesWithViewports() || !g.gpuCurrent || g.cpuCurrent) return sceneView();
-    g.context->makeCurrent();
-    glFinish(); // another context reads these buffers next: the steps must be complete
+    if (!drawsFromGpu()) return sceneView();
+    context_->makeCurrent();
+    waitUntilCommandsComplete(); // another context reads these buffers next
     SceneView view = sceneFrame();
     GpuParticles p;
     p.positions = g.pos[g.current].id();
@@ -130,12 +131,8 @@ const GpuCellGrid& MdModelGL::cellGrid() const {
 }
 
 void MdModelGL::finishPendingWork() const {
-    gpu_->context->makeCurrent();
+    context_->makeCurrent();
     glFinish();
-}
-
-void MdModelGL::stateEdited() {
-    if (gpu_) gpu_->gpuCurrent = false;
 }
 
 void MdModelGL::upload() {
@@ -171,16 +168,12 @@ void MdModelGL::upload() {
     const float firstImpulse = static_cast<float>(impulse);
     if (n > 0) g.impulseSums.upload(&firstImpulse, sizeof firstImpulse);
     g.pendingKick = 0.0;
-    g.gpuCurrent = true;
-    g.cpuCurrent = true;
     drift(0.0, 0.0, 0.0); // a drift of length zero only sorts into cell order
     forces(false, 0.0);
 }
 
-void MdModelGL::pullState() const {
+void MdModelGL::download() const {
     MdGpu& g = *gpu_;
-    if (g.cpuCurrent || !g.gpuCurrent) return;
-    g.context->makeCurrent();
     const std::size_t n = g.count;
     const auto pos = g.pos[g.current].downloadVector<float>(2 * n);
     const auto vel = g.vel[g.current].downloadVector<float>(2 * n);
@@ -214,7 +207,6 @@ void MdModelGL::pullState() const {
     self->forcesValid_ = false;
     self->energiesValid_ = false;
     self->maxDisplacement2_ = -1.0;
-    g.cpuCurrent = true;
 }
 
 void MdModelGL::drift(double kickBefore, double h, double kickAfter) {
@@ -284,13 +276,13 @@ void MdModelGL::forces(bool countContacts, double kick, bool energies) {
     p.use();
     p.set("count", unsigned(g.count));
     p.set("stiffness", float(params_.stiffness));
-    p.set("gravity", float(params_.gravity));
+    p.set("gravity", float(params_.appliedGravity()));
     p.set("speciesDiameter", float(params_.a.diameter), float(params_.b.diameter));
     p.set("speciesInverseMass", float(1.0 / params_.a.mass), float(1.0 / params_.b.mass));
     p.set("maxContact", float(params_.maxDiameter()));
     p.set("countContacts", countContacts ? 1 : 0);
     p.set("energies", energies ? 1 : 0);
-    p.set("backtrackH", float(params_.dt));
+    p.set("backtrackH", float(signedStep()));
     g.grid.setUniforms(p);
     g.bindState();
     g.grid.starts().bind(8);
@@ -311,45 +303,28 @@ void MdModelGL::step() {
         stateEdited();
         return;
     }
-    gpu_->context->makeCurrent();
-    const double h = params_.dt;
+    context_->makeCurrent();
+    const double h = signedStep();
     advanceBodies(h);                             // on the CPU: a handful of bodies
     uploadObstacles(gpu_->obstacles, obstacles_); // they move between steps, never within one
-    if (!gpu_->gpuCurrent) upload();
+    pushState();
     gpu_->dispatches = 0;
     gpu_->mark("start");
     driftIndex_ = 0;
-    // The same splittings as MdIntegrators.cpp, stage for stage.
-    switch (integrator_) {
-    case MdIntegrator::VelocityVerlet:
-        drift(0.5 * h, h, 0.0);
-        forces(true, 0.5 * h);
-        break;
-    case MdIntegrator::SymplecticEuler:
-        drift(h, h, 0.0);
-        forces(true, 0.0);
-        break;
-    case MdIntegrator::ExplicitEuler:
-        drift(0.0, h, h);
-        forces(true, 0.0);
-        break;
-    case MdIntegrator::ForestRuth: {
-        const double t = kForestRuthTheta;
-        drift(0.5 * t * h, t * h, 0.0);
-        forces(false, 0.0);
-        drift(0.5 * (1.0 - t) * h, (1.0 - 2.0 * t) * h, 0.0);
-        forces(false, 0.0);
-        drift(0.5 * (1.0 - t) * h, t * h, 0.0);
-        forces(true, 0.5 * t * h);
-        break;
-    }
-    case MdIntegrator::RungeKutta4:
-        break; // stepsOnGpu() is false
+    // The integrator table's passes, as the CPU model runs them (MdModel::runPasses). The force pass
+    // leaves its kick pending; the next drift or a reader of the velocities applies it.
+    for (const MdPass& pass : mdIntegrator(integrator_).passes) {
+        if (pass.kind == MdPass::Kind::Drift)
+            drift(stepFraction(pass.kickBefore, h), stepFraction(pass.drift, h),
+                  stepFraction(pass.kickAfter, h));
+        else if (pass.kind == MdPass::Kind::Forces)
+            forces(pass.countContacts, stepFraction(pass.kickAfter, h));
+        // no RungeKutta4 pass here: stepsOnGpu() is false for it
     }
     if (gpu_->profiling) gpu_->collectMarks();
     ++step_;
     time_ += h;
-    gpu_->cpuCurrent = false;
+    steppedOnGpu();
     if (step_ % kHealthInterval == 0) checkGpuHealth();
 }
 
@@ -361,7 +336,7 @@ MdSums reduce(MdGpu& g, const MdParams& params) {
     p.use();
     p.set("count", unsigned(g.count));
     p.set("pendingKick", float(g.pendingKick));
-    p.set("gravity", float(params.gravity));
+    p.set("gravity", float(params.appliedGravity()));
     p.set("bottom", float(params.bottom()));
     p.set("speciesMass", float(params.a.mass), float(params.b.mass));
     g.bindState();
@@ -429,13 +404,13 @@ double binnedKsDistance(const SpeedBins& bins, int s, double kT, double mass, lo
 } // namespace
 
 MdSums MdModelGL::gpuSums() {
-    gpu_->context->makeCurrent();
+    context_->makeCurrent();
     forces(false, gpu_->pendingKick, true); // the same accelerations again, now with energies
     return reduce(*gpu_, params_);
 }
 
 MdObservables MdModelGL::observe() {
-    if (!gpu_->gpuCurrent || !stepsOnGpu()) return MdModel::observe();
+    if (!gpuCurrent() || !stepsOnGpu()) return MdModel::observe();
     MdGpu& g = *gpu_;
     MdSums sums = gpuSums();
     std::uint32_t status[4];
@@ -463,9 +438,9 @@ MdObservables MdModelGL::observe() {
 }
 
 std::vector<NamedHistogram> MdModelGL::histograms() const {
-    if (!gpu_->gpuCurrent || !stepsOnGpu()) return MdModel::histograms();
+    if (!gpuCurrent() || !stepsOnGpu()) return MdModel::histograms();
     MdGpu& g = *gpu_;
-    g.context->makeCurrent();
+    context_->makeCurrent();
     const MdSums sums = reduce(g, params_);
     const double mass[2] = {params_.a.mass, params_.b.mass};
     double kT[2], plotMax[2], fineMax[2];
@@ -489,7 +464,7 @@ std::vector<NamedHistogram> MdModelGL::histograms() const {
 }
 
 double MdModelGL::totalEnergy() {
-    if (!gpu_->gpuCurrent || !stepsOnGpu()) return MdModel::totalEnergy();
+    if (!gpuCurrent() || !stepsOnGpu()) return MdModel::totalEnergy();
     const MdSums s = gpuSums();
     return s.kinetic[0] + s.kinetic[1] + s.potential;
 }

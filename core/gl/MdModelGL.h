@@ -4,6 +4,7 @@
 #pragma once
 
 #include "GlContext.h"
+#include "GpuHandOver.h"
 #include "md/MdModel.h"
 
 #include <memory>
@@ -13,14 +14,15 @@ namespace pl::gl {
 struct MdGpu;
 class GpuCellGrid;
 
-class MdModelGL : public MdModel {
+class MdModelGL : public GpuHandOver<MdModel> {
 public:
-    // Needs a current-able 4.3 context; throws GlUnavailable or ShaderError.
+    // Needs a current-able 4.3 context; throws GlUnavailable or ShaderError. Builds the default gas.
     explicit MdModelGL(std::shared_ptr<GlContext> context);
+    // Builds the preset's gas: one reset (throws PresetError as reset(preset) does).
+    MdModelGL(std::shared_ptr<GlContext> context, const Preset& preset);
     ~MdModelGL() override;
 
     void step() override;
-    std::string backend() const override { return "gl"; }
     void finishPendingWork() const override; // glFinish in the model's context
     MdObservables observe() override;
     double totalEnergy() override;
@@ -29,7 +31,6 @@ public:
 
     // Whether the current settings run on the GPU (rk4 and the all-pairs comparison run on the CPU).
     bool stepsOnGpu() const;
-    const ContextInfo& contextInfo() const;
     // Dispatches issued by the last step (for the benchmark's cost accounting).
     int dispatchesLastStep() const;
     // GPU time of each pass of the next steps, from timestamp queries (costs a sync per step).
@@ -39,12 +40,10 @@ public:
     // The counting-sort grid of the last step (tests check the order against it).
     const GpuCellGrid& cellGrid() const;
 
-protected:
-    void pullState() const override;
-    void stateEdited() override;
-
 private:
-    void upload();
+    void createBuffers();
+    void upload() override;
+    void download() const override;
     void drift(double kickBefore, double h, double kickAfter);
     void forces(bool countContacts, double kick, bool energies = false);
     MdSums gpuSums(); // energies and reductions at the current positions

@@ -24,7 +24,6 @@ constexpr double kParticlesPerCell = 0.1;
 } // namespace
 
 struct PbfGpu {
-    std::shared_ptr<GlContext> context;
     ComputeProgram predict{"pbf/pbf_predict.comp"}, lambda{"pbf/pbf_lambda.comp"},
         correct{"pbf/pbf_correct.comp"}, velocity{"pbf/pbf_velocity.comp"},
         vorticity{"pbf/pbf_vorticity.comp"}, xsph{"pbf/pbf_xsph.comp"};
@@ -35,26 +34,29 @@ struct PbfGpu {
     int current = 0;
     std::size_t count = 0;
     std::size_t errorGroups = 0; // λ groups per iteration in errorSums
-    bool gpuCurrent = false, cpuCurrent = true, errorsCurrent = true;
+    bool errorsCurrent = true;   // errorMean_ and errorMax_ hold the last GPU step's errors
     int dispatches = 0;
-
-    explicit PbfGpu(std::shared_ptr<GlContext> c) : context(std::move(c)) {}
 };
 
-PbfModelGL::PbfModelGL(std::shared_ptr<GlContext> context) {
-    context->makeCurrent();
-    gpu_ = std::make_unique<PbfGpu>(std::move(context));
+PbfModelGL::PbfModelGL(std::shared_ptr<GlContext> context) : GpuHandOver(std::move(context)) {
+    createBuffers();
+    reset();
+}
+
+PbfModelGL::PbfModelGL(std::shared_ptr<GlContext> context, const Preset& preset)
+    : GpuHandOver(std::move(context)) {
+    createBuffers();
+    reset(preset);
+}
+
+void PbfModelGL::createBuffers() {
+    gpu_ = std::make_unique<PbfGpu>();
     gpu_->status.reserve(16);
     gpu_->status.fillZero(16);
-    stateEdited();
 }
 
 PbfModelGL::~PbfModelGL() {
-    gpu_->context->makeCurrent();
-}
-
-const ContextInfo& PbfModelGL::contextInfo() const {
-    return gpu_->context->info();
+    context_->makeCurrent(); // buffers and programs are deleted in their context
 }
 
 int PbfModelGL::dispatchesLastStep() const {
@@ -62,15 +64,15 @@ int PbfModelGL::dispatchesLastStep() const {
 }
 
 void PbfModelGL::finishPendingWork() const {
-    gpu_->context->makeCurrent();
+    context_->makeCurrent();
     glFinish();
 }
 
 SceneView PbfModelGL::sceneViewSharingGpu() const {
     const PbfGpu& g = *gpu_;
-    if (!g.context->sharesWithViewports() || !g.gpuCurrent || g.cpuCurrent) return sceneView();
-    g.context->makeCurrent();
-    glFinish(); // another context reads these buffers next: the steps must be complete
+    if (!drawsFromGpu()) return sceneView();
+    context_->makeCurrent();
+    waitUntilCommandsComplete(); // another context reads these buffers next
     SceneView view = sceneFrame();
     GpuParticles p;
     p.positions = g.x[g.current].id();
@@ -80,10 +82,6 @@ SceneView PbfModelGL::sceneViewSharingGpu() const {
     p.count = g.count;
     view.gpu = p;
     return view;
-}
-
-void PbfModelGL::stateEdited() {
-    if (gpu_) gpu_->gpuCurrent = false;
 }
 
 void PbfModelGL::upload() {
@@ -102,24 +100,16 @@ void PbfModelGL::upload() {
     for (Buffer* b : {&g.lambdaBuffer, &g.omega}) b->reserve(n * 4);
     // Cells at least as wide as the kernel support (the CPU's search radius only adds pairs beyond h,
     // where every kernel is zero).
-    g.grid.configure(0.0, 0.0, params_.worldWidth, params_.worldHeight, params_.h / kCellReach, n,
+    g.grid.configure(0.0, 0.0, params_.boxWidth, params_.boxHeight, params_.h / kCellReach, n,
                      kParticlesPerCell);
-    g.gpuCurrent = true;
-    g.cpuCurrent = true;
 }
 
-void PbfModelGL::pullState() const {
+void PbfModelGL::download() const {
     PbfGpu& g = *gpu_;
-    if (!g.gpuCurrent) return;
-    if (!g.cpuCurrent) {
-        g.context->makeCurrent();
-        const auto x = g.x[g.current].downloadVector<float>(2 * g.count);
-        const auto v = g.v[g.current].downloadVector<float>(2 * g.count);
-        state_.clear();
-        for (std::size_t i = 0; i < g.count; ++i)
-            state_.append(x[2 * i], x[2 * i + 1], v[2 * i], v[2 * i + 1]);
-        g.cpuCurrent = true;
-    }
+    const auto x = g.x[g.current].downloadVector<float>(2 * g.count);
+    const auto v = g.v[g.current].downloadVector<float>(2 * g.count);
+    state_.clear();
+    for (std::size_t i = 0; i < g.count; ++i) state_.append(x[2 * i], x[2 * i + 1], v[2 * i], v[2 * i + 1]);
     if (!g.errorsCurrent) {
         const auto iterations = static_cast<std::size_t>(params_.iterations);
         const auto sums = g.errorSums.downloadVector<float>(2 * iterations * g.errorGroups);
@@ -165,16 +155,15 @@ void PbfModelGL::setCommonUniforms(ComputeProgram& p) const {
 void PbfModelGL::step() {
     if (failure_) return;
     PbfGpu& g = *gpu_;
-    g.context->makeCurrent();
-    if (!g.gpuCurrent) {
-        drainOverCap(); // spawning is the only way past the cap: drain before the particles go up
-        upload();
-    }
+    context_->makeCurrent();
+    // Spawning is the only way past the cap: drain before the particles go up.
+    if (!gpuCurrent()) drainOverCap();
+    pushState();
     g.dispatches = 0;
     const std::size_t n = g.count;
     advanceBodies(); // on the CPU: a handful of bodies
     uploadObstacles(g.obstacles, obstacles_);
-    const double gx = params_.gravity ? params_.gravityX : 0.0, gy = params_.gravity ? params_.gravityY : 0.0;
+    const double gx = params_.accelerationX(), gy = params_.accelerationY();
 
     // Lines 1–7: predict, then sort by the cell of the prediction (neighbours come from the cells).
     ComputeProgram& predict = g.predict;
@@ -275,7 +264,7 @@ void PbfModelGL::step() {
 
     ++step_;
     time_ += params_.dt;
-    g.cpuCurrent = false;
+    steppedOnGpu();
     g.errorsCurrent = false;
     if (step_ % kHealthInterval == 0) checkGpuHealth();
 }

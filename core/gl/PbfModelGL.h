@@ -5,6 +5,7 @@
 #pragma once
 
 #include "GlContext.h"
+#include "GpuHandOver.h"
 #include "pbf/PbfModel.h"
 
 #include <memory>
@@ -13,24 +14,24 @@ namespace pl::gl {
 
 struct PbfGpu;
 
-class PbfModelGL : public PbfModel {
+class PbfModelGL : public GpuHandOver<PbfModel> {
 public:
-    explicit PbfModelGL(std::shared_ptr<GlContext> context); // throws GlUnavailable or ShaderError
+    // Needs a current-able 4.3 context; throws GlUnavailable or ShaderError. Builds the default tank.
+    explicit PbfModelGL(std::shared_ptr<GlContext> context);
+    // Builds the preset's tank: one reset (throws PresetError as reset(preset) does).
+    PbfModelGL(std::shared_ptr<GlContext> context, const Preset& preset);
     ~PbfModelGL() override;
 
     void step() override;
-    std::string backend() const override { return "gl"; }
     void finishPendingWork() const override; // glFinish in the model's context
     SceneView sceneViewSharingGpu() const override;
-    const ContextInfo& contextInfo() const;
     int dispatchesLastStep() const;
 
-protected:
-    void pullState() const override;
-    void stateEdited() override;
-
 private:
-    void upload();
+    void createBuffers();
+    void upload() override;
+    // Also brings the per-iteration errors of the last GPU step to the CPU.
+    void download() const override;
     void setCommonUniforms(class ComputeProgram& p) const;
     void checkGpuHealth();
 

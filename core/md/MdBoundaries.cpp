@@ -1,11 +1,13 @@
 // Walls, piston and obstacles: mirror reflection of disk centres, thermal walls, wall impulses.
 #include "MdBoundaries.h"
+#include "MdDrift.h"
 
 #include "MdModel.h"
 #include "common/Philox.h"
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <numbers>
 
 namespace pl {
@@ -146,6 +148,125 @@ void Boundaries::collideWithObstacles(double& x, double& y, double& vx, double& 
     y = std::clamp(y, bottom, top);
 }
 
+namespace {
+
+// Two doubles per operation (GCC/Clang vector extensions; SSE2 on the x86-64 baseline, which is also
+// the width of this CPU's vector units). Element-wise IEEE arithmetic, so each lane equals the scalar.
+using Double2 = double __attribute__((vector_size(16)));
+using Mask2 = std::int64_t __attribute__((vector_size(16)));
+
+Double2 load2(const double* p) {
+    Double2 v;
+    std::memcpy(&v, p, sizeof v);
+    return v;
+}
+
+void store2(double* p, Double2 v) {
+    std::memcpy(p, &v, sizeof v);
+}
+
+// The larger of a and b per lane, a where b is not greater (so NaN never wins, as with std::max(a, b)).
+Double2 max2(Double2 a, Double2 b) {
+    const Mask2 bWins = b > a;
+    return reinterpret_cast<Double2>((reinterpret_cast<Mask2>(b) & bWins) |
+                                     (reinterpret_cast<Mask2>(a) & ~bWins));
+}
+
+// Disks per sweep: ten arrays of this many doubles stay in L1 between the sweeps.
+constexpr std::size_t kDriftChunk = 64;
+
+} // namespace
+
+void driftBlock(const Boundaries& wallsIn, const DriftStep& stepIn, const DriftArrays& arrays,
+                ParticleRange range, bool& escaped, double& worst) {
+    // Own copies: the caller's stack lines are written by its thread (false sharing, see driftStage).
+    const Boundaries walls = wallsIn;
+    const DriftStep step = stepIn;
+    const DriftArrays a = arrays;
+    const double kickBefore = step.kickBefore, h = step.h, kickAfter = step.kickAfter;
+    bool anyEscaped = false;
+    double largest = worst;
+    if (!walls.obstacles->empty()) {
+        // Every disk may meet an obstacle: one disk at a time.
+        for (std::size_t i = range.begin; i < range.end; ++i) {
+            double vx = a.vx[i] + kickBefore * a.ax[i];
+            double vy = a.vy[i] + kickBefore * a.ay[i];
+            double x = a.x[i] + h * vx;
+            double y = a.y[i] + h * vy;
+            double impulse = 0.0;
+            if (!walls.apply(x, y, vx, vy, a.species[i], a.id[i], impulse)) anyEscaped = true;
+            if (impulse != 0.0) a.wallImpulse[i] += impulse;
+            a.x[i] = x;
+            a.y[i] = y;
+            a.vx[i] = vx + kickAfter * a.ax[i];
+            a.vy[i] = vy + kickAfter * a.ay[i];
+            if (step.track) {
+                const double dx = x - a.builtX[i], dy = y - a.builtY[i];
+                largest = std::max(largest, dx * dx + dy * dy);
+            }
+        }
+    } else {
+        // Walls only: three sweeps per chunk, the first and last in SIMD. Sweep 1 kicks and drifts and
+        // notes whether any disk left the box; sweep 2 (rare) mirrors those disks exactly as apply does;
+        // sweep 3 adds the second kick and the displacement. Each disk sees the same operations in the
+        // same order as in the one-disk loop above.
+        const double left = walls.left, right = walls.right, bottom = walls.bottom, top = walls.top;
+        Double2 largest2 = {largest, largest};
+        for (std::size_t first = range.begin; first < range.end; first += kDriftChunk) {
+            const std::size_t last = std::min(first + kDriftChunk, range.end);
+            std::size_t i = first;
+            Mask2 outside2 = {0, 0};
+            for (; i + 2 <= last; i += 2) {
+                const Double2 vx = load2(a.vx + i) + kickBefore * load2(a.ax + i);
+                const Double2 vy = load2(a.vy + i) + kickBefore * load2(a.ay + i);
+                const Double2 x = load2(a.x + i) + h * vx;
+                const Double2 y = load2(a.y + i) + h * vy;
+                store2(a.vx + i, vx);
+                store2(a.vy + i, vy);
+                store2(a.x + i, x);
+                store2(a.y + i, y);
+                outside2 |= ~((x > left) & (x < right) & (y > bottom) & (y < top)); // NaN counts as outside
+            }
+            bool outside = (outside2[0] | outside2[1]) != 0;
+            for (; i < last; ++i) {
+                a.vx[i] += kickBefore * a.ax[i];
+                a.vy[i] += kickBefore * a.ay[i];
+                a.x[i] += h * a.vx[i];
+                a.y[i] += h * a.vy[i];
+                outside = outside || !(a.x[i] > left && a.x[i] < right && a.y[i] > bottom && a.y[i] < top);
+            }
+            if (outside) {
+                for (i = first; i < last; ++i) {
+                    double impulse = 0.0;
+                    if (!walls.apply(a.x[i], a.y[i], a.vx[i], a.vy[i], a.species[i], a.id[i], impulse))
+                        anyEscaped = true;
+                    if (impulse != 0.0) a.wallImpulse[i] += impulse;
+                }
+            }
+            for (i = first; i + 2 <= last; i += 2) {
+                store2(a.vx + i, load2(a.vx + i) + kickAfter * load2(a.ax + i));
+                store2(a.vy + i, load2(a.vy + i) + kickAfter * load2(a.ay + i));
+                if (step.track) {
+                    const Double2 dx = load2(a.x + i) - load2(a.builtX + i);
+                    const Double2 dy = load2(a.y + i) - load2(a.builtY + i);
+                    largest2 = max2(largest2, dx * dx + dy * dy);
+                }
+            }
+            for (; i < last; ++i) {
+                a.vx[i] += kickAfter * a.ax[i];
+                a.vy[i] += kickAfter * a.ay[i];
+                if (step.track) {
+                    const double dx = a.x[i] - a.builtX[i], dy = a.y[i] - a.builtY[i];
+                    largest = std::max(largest, dx * dx + dy * dy);
+                }
+            }
+        }
+        largest = std::max({largest, largest2[0], largest2[1]});
+    }
+    escaped = escaped || anyEscaped;
+    worst = largest;
+}
+
 } // namespace md
 
 md::Boundaries MdModel::boundaries(double h) const {
@@ -157,7 +278,7 @@ md::Boundaries MdModel::boundaries(double h) const {
     b.pistonVelocity = params_.pistonEnabled ? pistonVelocity_ : 0.0;
     b.h = h;
     b.timeSign = h >= 0 ? 1.0 : -1.0;
-    b.thermal = params_.wallMode == "thermal";
+    b.thermal = params_.wallMode == MdWallMode::Thermal;
     b.thermalRight = b.thermal && !params_.pistonEnabled;
     b.wallKT = params_.wallKT;
     b.mass[0] = params_.a.mass;

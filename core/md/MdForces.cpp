@@ -1,7 +1,8 @@
 // Force passes: Verlet neighbour lists built from the cell list (default) and the seed's all-pairs loop;
-// both give the same forces to round-off. Gather form: iteration i writes only particle i.
+// both give the same forces to round-off. Gather form: only particle i's sums take pair (i, j).
 #include "MdKernels.h"
 #include "MdModel.h"
+#include "MdThreadRange.h"
 #include "common/Parallel.h"
 
 #include <algorithm>
@@ -23,10 +24,103 @@ SpeciesTable speciesTable(const MdParams& p) {
     return {{p.a.diameter, p.b.diameter}, {1.0 / p.a.mass, 1.0 / p.b.mass}};
 }
 
+// What the neighbour-list force pass reads and writes. Raw pointers: the byte stores of the contact
+// flags may alias anything, and would otherwise make the compiler reload every vector's data pointer.
+struct ForceArrays {
+    const double* x;
+    const double* y;
+    const std::uint8_t* species;
+    const std::uint32_t* offsets;
+    const std::uint32_t* entries;
+    const std::uint32_t* rowOf;
+    std::uint8_t* touching; // in contact at the last counted evaluation
+    double* vx;
+    double* vy;
+    double* ax;
+    double* ay;
+    double* potential;
+    double* virial;
+    std::uint32_t* begun;
+};
+
+// MdModel::Contacts as a template argument of the force pass (that enum is the model's own).
+enum class ContactMode { Ignore, Count, Initialise };
+
+struct ForceConstants {
+    SpeciesTable table;
+    double stiffness, gravity, kickAfter;
+};
+
+// Forces on the disks of one block, then a = F / m − g and v += kickAfter a. The pairs run as one flat
+// sweep over the block's list entries (rowOf gives the disk), accumulating into a in list order: per
+// disk the same sums in the same order as a loop per disk, so the result is bit-identical to it, and
+// the sweep has no inner loop of varying length (with ~1.3 entries per disk its exit branch was the
+// most expensive instruction of the pass). Only disks of the block are written.
+template <ContactMode mode, bool energies>
+void forceBlock(const ForceArrays& a, const ForceConstants& c, md::ParticleRange range) {
+    const std::size_t first = range.begin, last = range.end;
+    if (first >= last) return;
+    // Locals, not a.*: a byte store may alias the struct, locals whose address is never taken may not.
+    const double* const x = a.x;
+    const double* const y = a.y;
+    const std::uint8_t* const species = a.species;
+    const std::uint32_t* const rowOf = a.rowOf;
+    const std::uint32_t* const entries = a.entries;
+    std::uint8_t* const touching = a.touching;
+    double* const ax = a.ax;
+    double* const ay = a.ay;
+    double* const vx = a.vx;
+    double* const vy = a.vy;
+    double* const potential = a.potential;
+    double* const virial = a.virial;
+    std::uint32_t* const begun = a.begun;
+    for (std::size_t i = first; i < last; ++i) {
+        ax[i] = 0.0;
+        ay[i] = 0.0;
+        if constexpr (energies) {
+            potential[i] = 0.0;
+            virial[i] = 0.0;
+        }
+    }
+    const double stiffness = c.stiffness;
+    const double diameterA = c.table.diameter[0], diameterB = c.table.diameter[1];
+    for (std::uint32_t k = a.offsets[first], end = a.offsets[last]; k < end; ++k) {
+        const std::uint32_t i = rowOf[k], j = entries[k];
+        const double di = species[i] ? diameterB : diameterA;
+        const double dj = species[j] ? diameterB : diameterA;
+        md::PairResult pair;
+        const bool inContact =
+            md::harmonicPair(x[i] - x[j], y[i] - y[j], md::contactDiameter(di, dj), stiffness, pair);
+        if constexpr (mode != ContactMode::Ignore) {
+            if constexpr (mode == ContactMode::Count)
+                if (inContact && !touching[k]) ++begun[i]; // a contact that began since the last evaluation
+            touching[k] = inContact;
+        }
+        if (!inContact) continue;
+        ax[i] += pair.fx;
+        ay[i] += pair.fy;
+        if constexpr (energies) {
+            potential[i] += 0.5 * pair.potential; // each pair is visited from both ends
+            virial[i] += 0.25 * pair.virial;
+        }
+    }
+    const double inverseMassA = c.table.inverseMass[0], inverseMassB = c.table.inverseMass[1];
+    const double gravity = c.gravity, kickAfter = c.kickAfter;
+    for (std::size_t i = first; i < last; ++i) {
+        const double invM = species[i] ? inverseMassB : inverseMassA;
+        const double axi = ax[i] * invM, ayi = ay[i] * invM - gravity;
+        ax[i] = axi;
+        ay[i] = ayi;
+        vx[i] += kickAfter * axi;
+        vy[i] += kickAfter * ayi;
+    }
+}
+
 } // namespace
 
 void MdModel::computeForces(Contacts contacts, double kickAfter, bool energies) {
-    if (params_.forceMethod == "all-pairs") {
+    ++forceEvaluations_;
+    if (params_.forceMethod == MdForceMethod::AllPairs) {
         computeForcesAllPairs(contacts, kickAfter);
         energies = true; // the comparison path always fills them
     } else {
@@ -54,62 +148,40 @@ void MdModel::refreshEnergies() {
 
 void MdModel::computeForcesNeighbourList(Contacts contacts, double kickAfter, bool energies) {
     MdState& s = state_;
-    const auto count = static_cast<long long>(s.size());
-    const SpeciesTable table = speciesTable(params_);
-    const double stiffness = params_.stiffness;
-    const double gravity = params_.gravity;
-    const std::uint32_t* offsets = neighbours_.offsets();
-    const std::uint32_t* entries = neighbours_.entries();
-    std::uint8_t* touching = neighbours_.payload(); // in contact at the last counted evaluation
-    // Raw pointers: the byte stores of the contact flags may alias anything, and would otherwise make
-    // the compiler reload every vector's data pointer after each of them.
-    const double* x = s.x.data();
-    const double* y = s.y.data();
-    double* vx = s.vx.data();
-    double* vy = s.vy.data();
-    double* ax = s.ax.data();
-    double* ay = s.ay.data();
-    double* potentialOut = s.potential.data();
-    double* virialOut = s.virial.data();
-    std::uint32_t* begunOut = s.contactsBegun.data();
-    const std::uint8_t* species = s.species.data();
-
-    // firstprivate: each thread reads its own copy of the loop's constants instead of the master's stack.
-#pragma omp parallel for schedule(static) if (count >= kParallelMinParticles)                                \
-    firstprivate(table, stiffness, gravity, offsets, entries, touching, x, y, vx, vy, ax, ay, potentialOut,  \
-                 virialOut, begunOut, species, contacts, kickAfter, energies)
-    for (long long i = 0; i < count; ++i) {
-        const double xi = x[i], yi = y[i];
-        const double di = table.diameter[species[i]];
-        const std::uint32_t first = offsets[i], last = offsets[i + 1];
-        double fx = 0, fy = 0, potential = 0, virial = 0;
-        std::uint32_t began = 0;
-        for (std::uint32_t k = first; k < last; ++k) {
-            const std::uint32_t j = entries[k];
-            md::PairResult pair;
-            const bool inContact = md::harmonicPair(
-                xi - x[j], yi - y[j], md::contactDiameter(di, table.diameter[species[j]]), stiffness, pair);
-            if (contacts != Contacts::Ignore) {
-                began += (contacts == Contacts::Count && inContact && !touching[k]) ? 1u : 0u;
-                touching[k] = inContact;
-            }
-            if (!inContact) continue;
-            fx += pair.fx;
-            fy += pair.fy;
-            potential += 0.5 * pair.potential; // each pair is visited from both ends
-            virial += 0.25 * pair.virial;
+    const std::size_t count = s.size();
+    const ForceArrays a{s.x.data(),
+                        s.y.data(),
+                        s.species.data(),
+                        neighbours_.offsets(),
+                        neighbours_.entries(),
+                        neighbours_.rowOf(),
+                        neighbours_.payload(),
+                        s.vx.data(),
+                        s.vy.data(),
+                        s.ax.data(),
+                        s.ay.data(),
+                        s.potential.data(),
+                        s.virial.data(),
+                        s.contactsBegun.data()};
+    const ForceConstants c{speciesTable(params_), params_.stiffness, params_.appliedGravity(), kickAfter};
+    // One region; each thread owns a block of disks and the list rows that belong to them.
+#pragma omp parallel if (static_cast <long long>(count) >= kParallelMinParticles)
+    {
+        const md::ParticleRange range = md::threadRange(count);
+        switch (contacts) {
+        case Contacts::Ignore:
+            energies ? forceBlock<ContactMode::Ignore, true>(a, c, range)
+                     : forceBlock<ContactMode::Ignore, false>(a, c, range);
+            break;
+        case Contacts::Count:
+            energies ? forceBlock<ContactMode::Count, true>(a, c, range)
+                     : forceBlock<ContactMode::Count, false>(a, c, range);
+            break;
+        case Contacts::Initialise:
+            energies ? forceBlock<ContactMode::Initialise, true>(a, c, range)
+                     : forceBlock<ContactMode::Initialise, false>(a, c, range);
+            break;
         }
-        const double invM = table.inverseMass[species[i]];
-        const double axi = fx * invM, ayi = fy * invM - gravity;
-        ax[i] = axi;
-        ay[i] = ayi;
-        vx[i] += kickAfter * axi;
-        vy[i] += kickAfter * ayi;
-        if (energies) {
-            potentialOut[i] = potential;
-            virialOut[i] = virial;
-        }
-        if (began) begunOut[i] += began;
     }
 }
 
@@ -118,7 +190,7 @@ void MdModel::computeForcesAllPairs(Contacts contacts, double kickAfter) {
     const auto count = static_cast<long long>(s.size());
     const SpeciesTable table = speciesTable(params_);
     const double stiffness = params_.stiffness;
-    const double gravity = params_.gravity;
+    const double gravity = params_.appliedGravity();
 #pragma omp parallel for schedule(static) if (count >= kParallelMinParticles)
     for (long long i = 0; i < count; ++i) {
         const double xi = s.x[i], yi = s.y[i];

@@ -23,7 +23,7 @@ void MdModel::buildInitialState() {
         state_.species[i] = i < params_.a.count ? 0 : 1;
         state_.id[i] = nextId();
     }
-    if (params_.initPlacement == "lattice") {
+    if (params_.initPlacement == MdInitPlacement::Lattice) {
         placeLattice();
     } else {
         placeRandom(0, params_.a.count, 0);
@@ -98,7 +98,7 @@ void MdModel::placeLattice() {
 }
 
 void MdModel::assignVelocities() {
-    const bool fixed = params_.initVelocity == "fixed-speed";
+    const bool fixed = params_.initVelocity == MdInitVelocity::FixedSpeed;
     for (std::size_t i = 0; i < state_.size(); ++i) {
         const auto words = randomWords(seed_, RngPurpose::InitialVelocity, state_.id[i], 0);
         if (fixed) {

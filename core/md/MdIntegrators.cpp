@@ -1,6 +1,7 @@
-// The five time-stepping schemes, built from drift stages (kick, drift, boundaries fused in one pass)
-// and force stages (forces, then a kick, in one pass). Each scheme ends with forces at the new
-// positions, so the next step starts from cached forces.
+// The integrator table's stages executed on the CPU: drift passes (kick, drift, boundaries fused in one
+// pass), force passes (forces, then a kick, in one pass) and RK4's own stepper. Each step ends with
+// forces at the new positions, so the next step starts from cached forces.
+#include "MdDrift.h"
 #include "MdModel.h"
 #include "common/Parallel.h"
 
@@ -8,51 +9,21 @@
 
 namespace pl {
 
-namespace {
-// Forest & Ruth (1990) / Yoshida (1990) 4th-order symplectic composition: θ = 1 / (2 − 2^{1/3}).
-const double kForestRuthTheta = 1.0 / (2.0 - std::cbrt(2.0));
-} // namespace
-
 void MdModel::driftStage(double kickBefore, double h, double kickAfter) {
     MdState& s = state_;
     const md::Boundaries walls = boundaries(h);
     const auto n = static_cast<long long>(s.size());
-    const bool track = neighbours_.valid() && params_.forceMethod != "all-pairs";
-    const double* builtX = neighbours_.builtX();
-    const double* builtY = neighbours_.builtY();
-    double* px = s.x.data();
-    double* py = s.y.data();
-    double* pvx = s.vx.data();
-    double* pvy = s.vy.data();
-    const double* pax = s.ax.data();
-    const double* pay = s.ay.data();
-    double* impulses = s.wallImpulse.data();
-    const std::uint8_t* species = s.species.data();
-    const std::uint32_t* ids = s.id.data();
+    const bool track = neighbours_.valid() && params_.forceMethod != MdForceMethod::AllPairs;
+    const md::DriftArrays arrays{s.x.data(),  s.y.data(),           s.vx.data(),          s.vy.data(),
+                                 s.ax.data(), s.ay.data(),          s.wallImpulse.data(), s.species.data(),
+                                 s.id.data(), neighbours_.builtX(), neighbours_.builtY()};
+    const md::DriftStep step{kickBefore, h, kickAfter, track};
     bool escaped = false;
     double worst = 0.0;
-    // firstprivate: each thread reads its own copy of the loop's constants instead of the master's stack,
-    // whose cache lines the master keeps writing (false sharing measured at a third of the loop's time).
-#pragma omp parallel for schedule(static) reduction(||                                                       \
-                                                    : escaped) reduction(max                                 \
-                                                                         : worst)                            \
-    firstprivate(walls, kickBefore, h, kickAfter, track, builtX, builtY, px, py, pvx, pvy, pax, pay,         \
-                 impulses, species, ids) if (n >= kParallelMinParticles)
-    for (long long i = 0; i < n; ++i) {
-        double vx = pvx[i] + kickBefore * pax[i];
-        double vy = pvy[i] + kickBefore * pay[i];
-        double x = px[i] + h * vx;
-        double y = py[i] + h * vy;
-        double impulse = 0.0;
-        if (!walls.apply(x, y, vx, vy, species[i], ids[i], impulse)) escaped = true;
-        if (impulse != 0.0) impulses[i] += impulse;
-        px[i] = x;
-        py[i] = y;
-        pvx[i] = vx + kickAfter * pax[i];
-        pvy[i] = vy + kickAfter * pay[i];
-        if (track)
-            worst = std::max(worst, (x - builtX[i]) * (x - builtX[i]) + (y - builtY[i]) * (y - builtY[i]));
-    }
+    // One block of disks per thread (md::driftBlock copies the constants it reads: the master's stack
+    // lines, which it keeps writing, were false sharing measured at a third of the loop's time).
+#pragma omp parallel reduction(|| : escaped) reduction(max : worst) if (n >= kParallelMinParticles)
+    md::driftBlock(walls, step, arrays, md::threadRange(static_cast<std::size_t>(n)), escaped, worst);
     escaped_ = escaped_ || escaped;
     maxDisplacement2_ = track ? worst : -1.0;
     ++driftIndex_;
@@ -76,33 +47,23 @@ void MdModel::boundaryStage(double h) {
     ++driftIndex_;
 }
 
-// Velocity Verlet (kick–drift–kick, Strang splitting): 2nd order, symplectic, time-reversible.
-void MdModel::stepVelocityVerlet(double h) {
-    driftStage(0.5 * h, h, 0.0);
-    computeForces(Contacts::Count, 0.5 * h);
-}
-
-// Symplectic Euler: v_{n+1} = v_n + h a(x_n); x_{n+1} = x_n + h v_{n+1}. 1st order, symplectic.
-void MdModel::stepSymplecticEuler(double h) {
-    driftStage(h, h, 0.0);
-    computeForces(Contacts::Count);
-}
-
-// Explicit Euler: x_{n+1} = x_n + h v_n; v_{n+1} = v_n + h a(x_n). Energy grows by (1 + ω²h²) per step.
-void MdModel::stepExplicitEuler(double h) {
-    driftStage(0.0, h, h); // the kick after the drift still uses a(x_n)
-    computeForces(Contacts::Count);
-}
-
-// Forest–Ruth in velocity form: kicks θ/2, (1−θ)/2, (1−θ)/2, θ/2 around drifts θ, 1−2θ, θ.
-void MdModel::stepForestRuth(double h) {
-    const double t = kForestRuthTheta;
-    driftStage(0.5 * t * h, t * h, 0.0);
-    computeForces(Contacts::Ignore);
-    driftStage(0.5 * (1.0 - t) * h, (1.0 - 2.0 * t) * h, 0.0);
-    computeForces(Contacts::Ignore);
-    driftStage(0.5 * (1.0 - t) * h, t * h, 0.0);
-    computeForces(Contacts::Count, 0.5 * t * h);
+// The integrator table's fused passes (MdIntegratorTable.h): one pass over the particles each.
+void MdModel::runPasses(const std::vector<MdPass>& passes, double h) {
+    for (const MdPass& pass : passes) {
+        switch (pass.kind) {
+        case MdPass::Kind::Drift:
+            driftStage(stepFraction(pass.kickBefore, h), stepFraction(pass.drift, h),
+                       stepFraction(pass.kickAfter, h));
+            break;
+        case MdPass::Kind::Forces:
+            computeForces(pass.countContacts ? Contacts::Count : Contacts::Ignore,
+                          stepFraction(pass.kickAfter, h));
+            break;
+        case MdPass::Kind::RungeKutta4:
+            stepRungeKutta4(h);
+            break;
+        }
+    }
 }
 
 // Classical RK4 on (x, v); walls reflect the final state (exact for free flight at the wall).

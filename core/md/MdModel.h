@@ -2,11 +2,13 @@
 #pragma once
 
 #include "MdBoundaries.h"
+#include "MdIntegratorTable.h"
 #include "MdParams.h"
 #include "MdState.h"
 #include "common/CellList.h"
 #include "common/KinematicDrive.h"
 #include "common/Model.h"
+#include "common/ModelBase.h"
 #include "common/NeighbourList.h"
 #include "common/Obstacle.h"
 
@@ -15,11 +17,6 @@
 #include <optional>
 
 namespace pl {
-
-enum class MdIntegrator { VelocityVerlet, SymplecticEuler, ExplicitEuler, RungeKutta4, ForestRuth };
-MdIntegrator integratorFromName(const std::string& name);
-// Largest ω·dt for which the scheme is stable on x'' = −ω² x (physics.md §1); 0 for explicit Euler.
-double stabilityLimit(MdIntegrator integrator);
 
 struct MdObservables {
     std::int64_t step = 0;
@@ -61,59 +58,42 @@ struct SpawnResult {
     std::string message() const;
 };
 
-class MdModel : public Model, public SceneTools {
+// Parameters, presets, the clock, obstacles and the tools' rules come from SceneModelBase
+// (common/ModelBase.h); this class holds the gas's physics.
+class MdModel : public SceneModelBase<MdParams, MdState> {
 public:
     MdModel();
     ~MdModel() override = default;
 
     // Model interface
     std::string kind() const override { return "gas"; }
-    const std::vector<ParamSpec>& paramSpecs() const override { return MdParams::describe(); }
-    ParamValues params() const override;
-    void setParams(const ParamValues& values) override;
-    void reset(const Preset& preset) override;
+    using ModelBase::reset;
     void reset() override;
-    Preset toPreset() const override;
     void step() override;
-    std::int64_t stepCount() const override { return step_; }
-    double time() const override { return time_; }
-    std::size_t particleCount() const override { return state_.size(); }
-    std::optional<ModelFailure> failure() const override { return failure_; }
     void checkHealthNow() override { checkHealth(true); }
     std::vector<std::string> seriesColumns() const override;
     std::vector<double> sampleSeries() override;
     std::vector<NamedHistogram> histograms() const override;
     void writeParticles(std::ostream& out) const override;
     SceneView sceneView() const override;
-    SceneTools* tools() override { return this; }
     StateRecord saveState() const override; // MdSnapshot.cpp
     void restoreState(const StateRecord& state) override;
 
-    // SceneTools interface (the obstacle and piston functions below belong to it too)
+    // SceneTools interface: the obstacles' tools are SceneModelBase's; the piston is the gas's own.
     bool hasPiston() const override { return params_.pistonEnabled; }
     double pistonX() const override { return params_.pistonX; }
     double toolSpeed() const override;
-    bool bodiesMoving() const override { return obstacleDrive_.moving() || pistonDrive_.moving(); }
     std::string spawnInRectangle(double x0, double y0, double x1, double y1) override;
-    void scaleKineticEnergy(double factor) override;
 
     // Gas-specific API
-    const MdParams& parameters() const { return params_; }
-    const MdState& state() const {
-        pullState();
-        return state_;
-    }
     virtual MdObservables observe(); // closes the wall-impulse and contact windows
     virtual double totalEnergy();    // kinetic + pair + gravity energy of the current state
     NamedHistogram speedHistogram(int species) const;
+    // Force evaluations of the CPU model since it was built (steps, observables, edits): the cost the
+    // integrator table states per step, counted where it happens.
+    std::int64_t forceEvaluations() const { return forceEvaluations_; }
 
-    const std::vector<Obstacle>& obstacles() const override { return obstacles_; }
-    void addObstacle(const Obstacle& obstacle) override;
-    void removeObstacle(std::size_t index) override;
-    // Kinematic bodies (targets are clamped into the box): the step moves them at bounded speed.
-    void dragObstacle(std::size_t index, double x, double y) override;
-    void releaseObstacle(std::size_t index) override;
-    void placeObstacle(std::size_t index, double x, double y) override;
+    // The piston is a kinematic body too: the step moves it at bounded speed.
     void dragPiston(double x) override;
     void drivePiston(int direction) override;
     int pistonDirection() const override { return pistonDrive_.direction(); }
@@ -129,10 +109,17 @@ public:
     long long removeNear(double x, double y, double radius);
 
 protected:
-    // A backend that keeps the particles elsewhere (the GPU) brings state_ up to date here before the
-    // CPU code reads it, and learns through stateEdited() that the CPU code changed it.
-    virtual void pullState() const {}
-    virtual void stateEdited() {}
+    // The bases' hooks: what a change of parameters, obstacles or energy means for the gas.
+    explicit MdModel(DeferReset) {}
+    void paramsChanged(const MdParams& before) override;
+    Area areaOf(const MdParams& p) const override { return {p.left(), p.bottom(), p.right(), p.top()}; }
+    // A preset's obstacles have their centres in the box (SceneModelBase leaves presets unchecked).
+    void checkObstacles(const MdParams& next, const std::vector<Obstacle>& obstacles) const override {
+        model_base::requireCentresInside(areaOf(next), obstacles);
+    }
+    void bodiesEdited(BodyEdit edit) override;
+    void energyEdited() override { rebaseEnergy(); } // a deliberate change of energy is not drift
+    bool pistonMoving() const override { return pistonDrive_.moving(); }
     // observe() after the sums: kT, pressures, wall window, contact rate, energy drift (not KS).
     MdObservables summarise(const MdSums& sums);
     // A speed histogram with its theory curve and summary line, from counts made elsewhere.
@@ -140,12 +127,10 @@ protected:
     double histogramRange(double kT, double mass) const; // the plotted speed range [L/T]
     SceneView sceneFrame() const;                        // the scene without its particles
 
-    // Integrators (MdIntegrators.cpp): one step each, all ending with forces at the new positions.
-    void stepVelocityVerlet(double h);
-    void stepSymplecticEuler(double h);
-    void stepExplicitEuler(double h);
+    // Integrators (MdIntegrators.cpp): the integrator table's passes for one step, ending with forces
+    // at the new positions; RK4's own stepper is the table's RungeKutta4 stage.
+    void runPasses(const std::vector<MdPass>& passes, double h);
     void stepRungeKutta4(double h);
-    void stepForestRuth(double h);
 
     // Stages. Each loop over particles does as much as it can in one pass (gather form throughout).
     enum class Contacts { Ignore, Count, Initialise };
@@ -184,12 +169,8 @@ protected:
     bool insideSpace(double x, double y, double radius) const;
     std::uint32_t nextId() { return nextId_++; }
 
-    MdParams params_;
-    std::uint64_t seed_ = 1;
-    std::vector<Obstacle> obstacles_;
     MdIntegrator integrator_ = MdIntegrator::VelocityVerlet;
 
-    mutable MdState state_;          // mutable: a GPU backend fills it lazily in pullState()
     NeighbourList neighbours_;       // payload byte per pair: in contact at the last counted evaluation
     double maxDisplacement2_ = -1.0; // since the list build, from the last drift; −1 when unknown
     CellList sortCells_;
@@ -197,14 +178,12 @@ protected:
     std::vector<double> xPrev_, yPrev_; // positions at the start of the step (all-pairs contact detection)
     std::vector<double> stageX_, stageY_, stageVX_, stageVY_, sumVX_, sumVY_, sumAX_, sumAY_; // RK4
     bool forcesValid_ = false;
+    std::int64_t forceEvaluations_ = 0;
     bool energiesValid_ = false; // potential and virial belong to the current positions
     bool escaped_ = false;
     double pistonVelocity_ = 0.0; // over the current step [L/T]
-    ObstacleDrive obstacleDrive_;
     PistonDrive pistonDrive_;
 
-    std::int64_t step_ = 0;
-    double time_ = 0.0;
     std::uint32_t nextId_ = 0;
     std::uint64_t spawnEvents_ = 0;
     std::uint32_t driftIndex_ = 0; // distinguishes thermal-wall draws of several drifts in one step
@@ -216,7 +195,6 @@ protected:
         double impulse, duration, perimeterTime;
     };
     std::deque<WallSample> wallWindow_;
-    std::optional<ModelFailure> failure_;
 };
 
 } // namespace pl

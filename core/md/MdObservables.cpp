@@ -1,6 +1,7 @@
 // Observables of the gas: energies, kT per species, momentum, virial and wall pressure, KS distance to
 // the 2D Maxwell–Boltzmann distribution, contact rate, speed histograms. Sums are serial (deterministic).
 #include "MdModel.h"
+#include "MdSeries.h"
 #include "common/Statistics.h"
 
 #include <algorithm>
@@ -15,6 +16,43 @@ constexpr double kHistogramSigmas = 5.0; // speed histogram range: 0 … 5 √(k
 const double kNaN = std::numeric_limits<double>::quiet_NaN();
 } // namespace
 
+const SeriesTable<MdObservables>& mdSeriesTable() {
+    using O = MdObservables;
+    static const SeriesTable<O> table{
+        {{"step", "", "step"}, [](const O& o) { return static_cast<double>(o.step); }},
+        {{"time", "T", "time"}, [](const O& o) { return o.time; }},
+        {{"particles", "", "disks"}, [](const O& o) { return static_cast<double>(o.particles); }},
+        {{"kinetic", "M·L²/T²", "kinetic energy"}, [](const O& o) { return o.kinetic; }},
+        {{"potential", "M·L²/T²", "potential energy (pairs and gravity)"},
+         [](const O& o) { return o.potential; }},
+        {{"total", "M·L²/T²", "total energy"}, [](const O& o) { return o.total; }},
+        {{"kT", "M·L²/T²", "kT (kinetic energy per disk)"}, [](const O& o) { return o.kT; }},
+        {{"kT_a", "M·L²/T²", "kT of species A"}, [](const O& o) { return o.kTSpecies[0]; }},
+        {{"kT_b", "M·L²/T²", "kT of species B"}, [](const O& o) { return o.kTSpecies[1]; }},
+        {{"px", "M·L/T", "momentum x"}, [](const O& o) { return o.px; }},
+        {{"py", "M·L/T", "momentum y"}, [](const O& o) { return o.py; }},
+        {{"pressure_virial", "M/T²", "pressure from the virial"},
+         [](const O& o) { return o.pressureVirial; }},
+        {{"pressure_wall", "M/T²", "pressure from wall impulses"}, [](const O& o) { return o.pressureWall; }},
+        {{"pressure_ideal", "M/T²", "ideal-gas pressure N kT / A"},
+         [](const O& o) { return o.pressureIdeal; }},
+        {{"ks_a", "", "KS distance to Maxwell–Boltzmann, A"}, [](const O& o) { return o.ksDistance[0]; }},
+        {{"ks_b", "", "KS distance to Maxwell–Boltzmann, B"}, [](const O& o) { return o.ksDistance[1]; }},
+        {{"collision_rate", "1/T", "contacts begun per time"}, [](const O& o) { return o.collisionRate; }},
+        {{"energy_drift", "", "relative energy drift |E − E₀| / E₀"},
+         [](const O& o) { return o.energyDrift; }},
+    };
+    return table;
+}
+
+std::vector<std::string> MdModel::seriesColumns() const {
+    return mdSeriesTable().names();
+}
+
+std::vector<double> MdModel::sampleSeries() {
+    return mdSeriesTable().sample(observe());
+}
+
 MdObservables MdModel::observe() {
     pullState();
     refreshEnergies();
@@ -25,7 +63,8 @@ MdObservables MdModel::observe() {
         const double m = mass[s];
         sums.kinetic[s] += 0.5 * m * (state_.vx[i] * state_.vx[i] + state_.vy[i] * state_.vy[i]);
         ++sums.count[s];
-        sums.potential += state_.potential[i] + m * params_.gravity * (state_.y[i] - params_.bottom());
+        sums.potential +=
+            state_.potential[i] + m * params_.appliedGravity() * (state_.y[i] - params_.bottom());
         sums.px += m * state_.vx[i];
         sums.py += m * state_.vy[i];
         sums.virial += state_.virial[i];
@@ -58,14 +97,15 @@ MdObservables MdModel::summarise(const MdSums& sums) {
     o.py = sums.py;
     o.total = o.kinetic + o.potential;
     const auto n = static_cast<double>(o.particles);
-    // Reflecting walls do not conserve momentum: 2 degrees of freedom per disk (physics.md §1).
+    // Reflecting walls do not conserve momentum: 2 degrees of freedom per disk
+    // (docs/gas.md#temperature-and-degrees-of-freedom).
     o.kT = n > 0 ? o.kinetic / n : 0.0;
     for (int s = 0; s < 2; ++s)
         o.kTSpecies[s] = sums.count[s] > 0 ? sums.kinetic[s] / static_cast<double>(sums.count[s]) : kNaN;
 
     double area = (params_.right() - params_.left()) * params_.boxHeight;
     for (const auto& ob : obstacles_) area -= ob.grownArea(0.5 * params_.a.diameter);
-    // Virial pressure (physics.md §1): P A = N kT + ½ Σ_{i<j} r_ij·f_ij.
+    // Virial pressure (docs/gas.md#virial-pressure): P A = N kT + ½ Σ_{i<j} r_ij·f_ij.
     o.pressureIdeal = n * o.kT / area;
     o.pressureVirial = (n * o.kT + sums.virial) / area;
 

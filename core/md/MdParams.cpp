@@ -1,6 +1,8 @@
 // The gas model's parameter table: one row per field, with units, ranges and tooltips.
 #include "MdParams.h"
 
+#include "MdIntegratorTable.h"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -85,11 +87,10 @@ std::vector<ParamField<MdParams>> makeFields() {
                  makeSpec("stiffness", "Stiffness k", "M/T²", "Interaction",
                           "Spring constant of the harmonic repulsion U = k/2 (d − r)²; the seed uses 1000.",
                           1e-6, 1e12, 100, d.stiffness, true)));
-    f.push_back(bindText(&P::initVelocity,
-                         makeChoice("init_velocity", "Initial velocities", "Initial state",
-                                    "fixed-speed: every disk at init_speed in a random direction (the "
-                                    "seed); maxwell-boltzmann: Gaussian components at init_kT.",
-                                    {"fixed-speed", "maxwell-boltzmann"})));
+    f.push_back(bindChoice(&P::initVelocity,
+                           makeChoice("init_velocity", "Initial velocities", "Initial state",
+                                      "fixed-speed: every disk at init_speed in a random direction (the "
+                                      "seed); maxwell-boltzmann: Gaussian components at init_kT.")));
     f.push_back(
         bindReal(&P::initSpeed, makeSpec("init_speed", "Initial speed", "L/T", "Initial state",
                                          "Speed of every disk for fixed-speed starts; the seed uses 1.", 0,
@@ -97,29 +98,30 @@ std::vector<ParamField<MdParams>> makeFields() {
     f.push_back(bindReal(&P::initKT, makeSpec("init_kT", "Initial kT", "M·L²/T²", "Initial state",
                                               "Temperature of maxwell-boltzmann starts and of spawned disks.",
                                               0, 1e12, 0.1, d.initKT, true)));
-    f.push_back(bindText(
-        &P::initPlacement,
-        makeChoice(
-            "init_placement", "Initial placement", "Initial state",
-            "random: uniform positions, overlaps allowed (the seed); lattice: a square lattice, no overlaps.",
-            {"random", "lattice"})));
-    f.push_back(bindText(
-        &P::integrator, makeChoice("integrator", "Integrator", "Integration",
-                                   "Time-stepping method; velocity Verlet is symplectic and time-reversible.",
-                                   MdParams::integratorNames(), true)));
+    f.push_back(
+        bindChoice(&P::initPlacement, makeChoice("init_placement", "Initial placement", "Initial state",
+                                                 "random: uniform positions, overlaps allowed (the seed); "
+                                                 "lattice: a square lattice, no overlaps.")));
+    f.push_back(bindChoice(
+        &P::integrator,
+        makeChoice("integrator", "Integrator", "Integration",
+                   "Time-stepping method; velocity Verlet is symplectic and time-reversible.", true)));
     ParamSpec dt =
         makeSpec("dt", "Time step", "T", "Integration",
                  "Signed step; negative runs time backwards. The seed uses 1e-4.", -1, 1, 1e-5, d.dt, true);
     dt.nonZero = true;
     f.push_back(bindReal(&P::dt, dt));
-    f.push_back(bindText(
+    f.push_back(bindChoice(
         &P::forceMethod,
         makeChoice("force_method", "Force search", "Integration",
                    "cell-list: O(N) neighbour search; all-pairs: the seed's O(N²) loop, for comparison.",
-                   {"cell-list", "all-pairs"}, true)));
+                   true)));
     f.push_back(
         bindReal(&P::gravity, makeSpec("gravity", "Gravity", "L/T²", "Walls and fields",
                                        "Downward acceleration; 0 for none.", 0, 1e6, 0.1, d.gravity, true)));
+    f.push_back(bindBool(&P::gravityOn, makeSpec("gravity_on", "Gravity on", "", "Walls and fields",
+                                                 "The gravity switch (key G); off, the disks feel none.", 0,
+                                                 0, 0, d.gravityOn, true)));
     f.push_back(bindBool(&P::pistonEnabled, makeSpec("piston_enabled", "Piston", "", "Walls and fields",
                                                      "Replace the right wall by a movable piston.", 0, 0, 0,
                                                      d.pistonEnabled, true)));
@@ -138,11 +140,10 @@ std::vector<ParamField<MdParams>> makeFields() {
                  "Fastest a dragged obstacle or the piston moves, in units of the initial rms speed: the "
                  "disks always meet a wall of finite speed, whatever the frame rate.",
                  1e-3, 100, 0.1, d.toolSpeed, true)));
-    f.push_back(
-        bindText(&P::wallMode, makeChoice("wall_mode", "Walls", "Walls and fields",
-                                          "reflecting: elastic walls; thermal: disks leave a wall with "
-                                          "velocities drawn at wall_kT (heating or cooling).",
-                                          {"reflecting", "thermal"}, true)));
+    f.push_back(bindChoice(&P::wallMode, makeChoice("wall_mode", "Walls", "Walls and fields",
+                                                    "reflecting: elastic walls; thermal: disks leave a wall "
+                                                    "with velocities drawn at wall_kT (heating or cooling).",
+                                                    true)));
     f.push_back(
         bindReal(&P::wallKT, makeSpec("wall_kT", "Wall kT", "M·L²/T²", "Walls and fields",
                                       "Temperature of thermal walls.", 0, 1e12, 0.05, d.wallKT, true)));
@@ -178,16 +179,34 @@ std::string number(double v) {
 
 } // namespace
 
+const ChoiceTable<MdInitVelocity>& choiceTable(MdInitVelocity) {
+    static const ChoiceTable<MdInitVelocity> table{{MdInitVelocity::FixedSpeed, "fixed-speed"},
+                                                   {MdInitVelocity::MaxwellBoltzmann, "maxwell-boltzmann"}};
+    return table;
+}
+
+const ChoiceTable<MdInitPlacement>& choiceTable(MdInitPlacement) {
+    static const ChoiceTable<MdInitPlacement> table{{MdInitPlacement::Random, "random"},
+                                                    {MdInitPlacement::Lattice, "lattice"}};
+    return table;
+}
+
+const ChoiceTable<MdForceMethod>& choiceTable(MdForceMethod) {
+    static const ChoiceTable<MdForceMethod> table{{MdForceMethod::CellList, "cell-list"},
+                                                  {MdForceMethod::AllPairs, "all-pairs"}};
+    return table;
+}
+
+const ChoiceTable<MdWallMode>& choiceTable(MdWallMode) {
+    static const ChoiceTable<MdWallMode> table{{MdWallMode::Reflecting, "reflecting"},
+                                               {MdWallMode::Thermal, "thermal"}};
+    return table;
+}
+
 double MdParams::maxDiameter() const {
     double d = a.count > 0 ? a.diameter : 0.0;
     if (b.count > 0) d = std::max(d, b.diameter);
     return d > 0 ? d : std::max(a.diameter, b.diameter);
-}
-
-const std::vector<std::string>& MdParams::integratorNames() {
-    static const std::vector<std::string> names{"velocity-verlet", "symplectic-euler", "explicit-euler",
-                                                "rk4", "forest-ruth"};
-    return names;
 }
 
 const std::vector<ParamField<MdParams>>& MdParams::fields() {

@@ -1,12 +1,23 @@
 // Parameters of the soft-disk gas (reduced units: length L, mass M, time T, energy M·L²/T²).
 #pragma once
 
+#include "MdIntegratorTable.h"
 #include "common/ParamSpec.h"
 
 #include <string>
 #include <vector>
 
 namespace pl {
+
+enum class MdInitVelocity { FixedSpeed, MaxwellBoltzmann };
+enum class MdInitPlacement { Random, Lattice };
+enum class MdForceMethod { CellList, AllPairs };
+enum class MdWallMode { Reflecting, Thermal };
+// The names of each choice as preset files and the command line spell them.
+const ChoiceTable<MdInitVelocity>& choiceTable(MdInitVelocity);
+const ChoiceTable<MdInitPlacement>& choiceTable(MdInitPlacement);
+const ChoiceTable<MdForceMethod>& choiceTable(MdForceMethod);
+const ChoiceTable<MdWallMode>& choiceTable(MdWallMode);
 
 struct MdSpeciesParams {
     long long count = 0;           // number of disks; 0 disables the species
@@ -25,22 +36,23 @@ struct MdParams {
 
     double stiffness = 1000.0; // k of U = k/2 (d − r)² [M/T²], typical 1e3 (seed), range [1e-6, 1e12]
 
-    std::string initVelocity = "fixed-speed"; // "fixed-speed" (seed) or "maxwell-boltzmann"
-    double initSpeed = 1.0;                   // fixed-speed magnitude [L/T], seed 1
-    double initKT = 0.5;                      // Maxwell–Boltzmann kT [M·L²/T²]
-    std::string initPlacement = "random";     // "random" (seed; overlaps allowed) or "lattice"
+    MdInitVelocity initVelocity = MdInitVelocity::FixedSpeed; // fixed speed (seed) or Maxwell–Boltzmann
+    double initSpeed = 1.0;                                   // fixed-speed magnitude [L/T], seed 1
+    double initKT = 0.5;                                      // Maxwell–Boltzmann kT [M·L²/T²]
+    MdInitPlacement initPlacement = MdInitPlacement::Random;  // random (seed; overlaps allowed) or lattice
 
-    std::string integrator = "velocity-verlet"; // see integratorNames()
-    double dt = 1e-4;                           // signed time step [T]; negative runs time backwards
-    std::string forceMethod = "cell-list";      // "cell-list" or "all-pairs" (the seed's O(N²) loop)
+    MdIntegrator integrator = MdIntegrator::VelocityVerlet; // an entry of MdIntegratorTable.h
+    double dt = 1e-4;                                    // signed time step [T]; negative runs time backwards
+    MdForceMethod forceMethod = MdForceMethod::CellList; // or all pairs (the seed's O(N²) loop)
 
-    double gravity = 0.0;                // downward acceleration [L/T²]
-    bool pistonEnabled = false;          // a movable vertical wall replacing the right wall
-    double pistonX = 1.0;                // its position [L], must lie inside the box
-    double pistonSpeed = 0.05;           // Compress / Expand speed of the piston [× initial rms speed]
-    double toolSpeed = 0.3;              // fastest a dragged obstacle or piston moves [× initial rms speed]
-    std::string wallMode = "reflecting"; // "reflecting" or "thermal" (diffuse walls at wallKT)
-    double wallKT = 0.5;                 // thermal wall temperature [M·L²/T²]
+    double gravity = 0.0;       // downward acceleration [L/T²] while gravityOn
+    bool gravityOn = true;      // the gravity switch (key G), shared with the fluid
+    bool pistonEnabled = false; // a movable vertical wall replacing the right wall
+    double pistonX = 1.0;       // its position [L], must lie inside the box
+    double pistonSpeed = 0.05;  // Compress / Expand speed of the piston [× initial rms speed]
+    double toolSpeed = 0.3;     // fastest a dragged obstacle or piston moves [× initial rms speed]
+    MdWallMode wallMode = MdWallMode::Reflecting; // or thermal (diffuse walls at wallKT)
+    double wallKT = 0.5;                          // thermal wall temperature [M·L²/T²]
 
     long long maxParticles = 1 << 20;  // cap on disks, enforced by reset and spawning
     double spawnMaxOverlap = 0.25;     // refuse a spawned disk overlapping another by more than this × d
@@ -51,6 +63,7 @@ struct MdParams {
     long long totalCount() const { return a.count + b.count; }
     const MdSpeciesParams& species(int s) const { return s == 0 ? a : b; }
     double maxDiameter() const;
+    double appliedGravity() const { return gravityOn ? gravity : 0.0; } // acting now [L/T²]
     double left() const { return -0.5 * boxWidth; }
     double right() const { return pistonEnabled ? pistonX : 0.5 * boxWidth; }
     double bottom() const { return -0.5 * boxHeight; }
@@ -58,7 +71,6 @@ struct MdParams {
 
     static const std::vector<ParamField<MdParams>>& fields();
     static const std::vector<ParamSpec>& describe();
-    static const std::vector<std::string>& integratorNames();
 
     // Cross-field checks (the disks fit in the box and in memory, the piston lies in the box).
     // Throws ParamError naming the key. memoryBudget [bytes] defaults to half the physical memory.

@@ -1,5 +1,5 @@
 // The gas as the viewport and the mouse tools see it: disks coloured by speed, obstacles, the piston;
-// spawning at the gas's current temperature and the heat / cool control.
+// spawning at the gas's current temperature (heat / cool is SceneModelBase's).
 #include "MdModel.h"
 
 #include <cmath>
@@ -55,24 +55,11 @@ std::string MdModel::spawnInRectangle(double x0, double y0, double x1, double y1
     for (std::size_t i = 0; i < state_.size(); ++i)
         kinetic += 0.5 * params_.species(state_.species[i]).mass *
                    (state_.vx[i] * state_.vx[i] + state_.vy[i] * state_.vy[i]);
-    const double fallback = params_.initVelocity == "maxwell-boltzmann"
+    const double fallback = params_.initVelocity == MdInitVelocity::MaxwellBoltzmann
                                 ? params_.initKT
                                 : 0.5 * params_.a.mass * params_.initSpeed * params_.initSpeed;
     const double kT = state_.size() > 0 ? kinetic / static_cast<double>(state_.size()) : fallback;
     return spawnRectangle(x0, y0, x1, y1, 0, kT).message();
-}
-
-void MdModel::scaleKineticEnergy(double factor) {
-    if (!(factor > 0) || !std::isfinite(factor))
-        throw std::invalid_argument("kinetic energy factor must be positive and finite");
-    pullState();
-    const double s = std::sqrt(factor);
-    for (std::size_t i = 0; i < state_.size(); ++i) {
-        state_.vx[i] *= s;
-        state_.vy[i] *= s;
-    }
-    stateEdited();
-    rebaseEnergy(); // a deliberate change of energy is not drift
 }
 
 } // namespace pl

@@ -10,8 +10,7 @@ namespace pl {
 StateRecord MdModel::saveState() const {
     pullState();
     StateRecord r;
-    r.put("step", static_cast<double>(step_));
-    r.put("time", time_);
+    saveClock(r);
     r.put("next_id", nextId_);
     r.put("spawn_events", static_cast<double>(spawnEvents_));
     r.put("last_sort_step", static_cast<double>(lastSortStep_));
@@ -81,15 +80,15 @@ void MdModel::restoreState(const StateRecord& r) {
                        list.offsets.back() != list.entries.size()))
         throw PresetError("state.neighbours_offsets",
                           "the snapshot's neighbour list does not fit its particles");
+    // An invalid list (all-pairs forces never rebuild it) is rebuilt before use: stale entries are harmless.
     for (const std::uint32_t j : list.entries)
-        if (j >= n)
+        if (list.valid && j >= n)
             throw PresetError("state.neighbours_entries",
                               "the snapshot's neighbour list names a missing disk");
     const std::vector<double> window = r.array<double>("wall_window");
     if (window.size() % 3 != 0) throw PresetError("state.wall_window", "state.wall_window must hold triples");
 
-    step_ = static_cast<std::int64_t>(r.scalar("step"));
-    time_ = r.scalar("time");
+    restoreClock(r);
     nextId_ = static_cast<std::uint32_t>(r.scalar("next_id"));
     spawnEvents_ = static_cast<std::uint64_t>(r.scalar("spawn_events"));
     lastSortStep_ = static_cast<std::int64_t>(r.scalar("last_sort_step"));
@@ -105,7 +104,6 @@ void MdModel::restoreState(const StateRecord& r) {
     wallWindow_.clear();
     for (std::size_t k = 0; k < window.size(); k += 3)
         wallWindow_.push_back({window[k], window[k + 1], window[k + 2]});
-    failure_.reset();
     escaped_ = false;
     obstacleDrive_.clear();
     pistonDrive_.stop();

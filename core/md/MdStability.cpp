@@ -1,4 +1,4 @@
-// Blow-up detection and the hints that explain it (stability limits from physics.md §1).
+// Blow-up detection and the hints that explain it (stability limits from the integrator table).
 #include "MdKernels.h"
 #include "MdModel.h"
 
@@ -28,23 +28,6 @@ std::pair<std::string, std::string> distinct(double a, double b) {
 
 } // namespace
 
-// Largest ω·dt for which each scheme is stable on x'' = −ω² x (physics.md §1; Forest–Ruth from its
-// amplification matrix, about 1.57). Explicit Euler has none.
-double stabilityLimit(MdIntegrator integrator) {
-    switch (integrator) {
-    case MdIntegrator::VelocityVerlet:
-    case MdIntegrator::SymplecticEuler:
-        return 2.0;
-    case MdIntegrator::RungeKutta4:
-        return 2.0 * std::sqrt(2.0);
-    case MdIntegrator::ForestRuth:
-        return 1.5734;
-    case MdIntegrator::ExplicitEuler:
-        return 0.0;
-    }
-    return 0.0;
-}
-
 double MdModel::totalEnergy() {
     refreshEnergies();
     double kinetic = 0.0, potential = 0.0;
@@ -52,7 +35,7 @@ double MdModel::totalEnergy() {
     for (std::size_t i = 0; i < state_.size(); ++i) {
         const double m = mass[state_.species[i]];
         kinetic += 0.5 * m * (state_.vx[i] * state_.vx[i] + state_.vy[i] * state_.vy[i]);
-        potential += state_.potential[i] + m * params_.gravity * (state_.y[i] - params_.bottom());
+        potential += state_.potential[i] + m * params_.appliedGravity() * (state_.y[i] - params_.bottom());
     }
     return kinetic + potential;
 }
@@ -76,12 +59,13 @@ std::string MdModel::stabilityHint() const {
     if (hasA && hasB)
         omega = std::max(omega, md::contactOmega(params_.stiffness, params_.a.mass, params_.b.mass));
     const double wdt = omega * std::abs(params_.dt);
-    const double limit = stabilityLimit(integrator_);
-    const std::string name = params_.integrator;
+    const MdIntegratorInfo& scheme = mdIntegrator(integrator_);
+    const double limit = scheme.stabilityLimit;
+    const std::string& name = scheme.name;
     if (integrator_ == MdIntegrator::ExplicitEuler)
         return "explicit Euler gains energy every step (factor 1 + ω²dt² = 1 + " +
-               formatNumber(wdt * wdt, 3) +
-               " per contact step) and is unstable at any dt: use velocity-verlet";
+               formatNumber(wdt * wdt, 3) + " per contact step) and is unstable at any dt: use " +
+               mdIntegrator(MdIntegrator::VelocityVerlet).name;
     const auto [shownWdt, shownLimit] = distinct(wdt, limit); // compared unrounded, shown apart
     if (wdt > limit)
         return "dt·ω = " + shownWdt + " > " + shownLimit + ": " + name + " is unstable; use |dt| < " +
@@ -107,8 +91,9 @@ void MdModel::checkHealth(bool energyCheck) {
         fail("the total energy is not finite", stabilityHint());
         return;
     }
-    const double bound = params_.blowupEnergyFactor * std::max(referenceEnergy_, std::abs(energyBaseline_)) +
-                         (params_.wallMode == "thermal" ? 4.0 * params_.wallKT * state_.size() : 0.0);
+    const double bound =
+        params_.blowupEnergyFactor * std::max(referenceEnergy_, std::abs(energyBaseline_)) +
+        (params_.wallMode == MdWallMode::Thermal ? 4.0 * params_.wallKT * state_.size() : 0.0);
     if (e > bound && e > 0)
         fail("the total energy grew from " + formatNumber(referenceEnergy_, 6) + " to " + formatNumber(e, 6) +
                  " (more than " + formatNumber(params_.blowupEnergyFactor, 3) + "×)",

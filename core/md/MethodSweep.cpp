@@ -1,9 +1,10 @@
-// The integrator sweep on the harmonic pair, run through MdModel's own integrators.
+// The integrator sweep on the harmonic pair, run through MdModel's own integrators; costs and orders
+// from the integrator table.
 #include "MethodSweep.h"
 
 #include "MdKernels.h"
 #include "MdModel.h"
-#include "methods/CellOutcome.h"
+#include "common/sweep/CellOutcome.h"
 
 #include <algorithm>
 #include <chrono>
@@ -19,20 +20,6 @@ namespace {
 constexpr double kDiameter = 0.1, kOverlap = 0.02;
 constexpr double kHorizonOverQuarterPeriod = 0.8;
 } // namespace
-
-int forcesPerStep(const std::string& integrator) {
-    if (integrator == "rk4") return 4;
-    if (integrator == "forest-ruth") return 3;
-    integratorFromName(integrator); // throws for an unknown name
-    return 1;
-}
-
-int theoreticalOrder(const std::string& integrator) {
-    if (integrator == "velocity-verlet") return 2;
-    if (integrator == "rk4" || integrator == "forest-ruth") return 4;
-    integratorFromName(integrator);
-    return 1; // symplectic and explicit Euler
-}
 
 double fitOrder(const std::vector<double>& dts, const std::vector<double>& errors, double noiseFloor) {
     double sx = 0, sy = 0, sxx = 0, sxy = 0;
@@ -78,7 +65,7 @@ SweepResult sweepHarmonicPair(const std::vector<std::string>& integrators, const
             }
             p.secondsPerTime =
                 std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() / horizon;
-            p.forcesPerTime = forcesPerStep(name) / dt;
+            p.forcesPerTime = mdIntegrator(name).forcesPerStep() / dt;
             const MdState& s = model.state();
             for (std::size_t i = 0; i < s.size(); ++i) {
                 const double exact = (s.id[i] == 0 ? -0.5 : 0.5) * gap; // the pair stays on the x axis
@@ -88,7 +75,7 @@ SweepResult sweepHarmonicPair(const std::vector<std::string>& integrators, const
             errors.push_back(p.trajectoryError);
             result.points.push_back(p);
         }
-        result.orders.push_back({name, fitOrder(dts, errors), theoreticalOrder(name)});
+        result.orders.push_back({name, fitOrder(dts, errors), mdIntegrator(name).order});
     }
     return result;
 }
@@ -140,7 +127,7 @@ void runReference(GasReference& reference, double horizon, double referenceDt) {
     if (reference.start.empty()) throw std::invalid_argument("the gas has no disks to follow");
     reference.horizon = horizon;
     reference.referenceDt = referenceDt;
-    auto model = startFrom(reference, "forest-ruth", referenceDt);
+    auto model = startFrom(reference, mdIntegrator(MdIntegrator::ForestRuth).name, referenceDt);
     const auto steps = std::llround(horizon / referenceDt);
     for (long long k = 0; k < steps; ++k) model->step();
     if (model->failure())
@@ -160,7 +147,7 @@ SweepResult sweepFromReference(const GasReference& reference, const std::vector<
             dts.push_back(result.points.back().dt);
             errors.push_back(result.points.back().trajectoryError);
         }
-        result.orders.push_back({name, fitOrder(dts, errors), theoreticalOrder(name)});
+        result.orders.push_back({name, fitOrder(dts, errors), mdIntegrator(name).order});
     }
     return result;
 }
@@ -169,7 +156,7 @@ SweepPoint sweepFromState(const GasReference& reference, const std::string& inte
     SweepPoint p;
     p.integrator = integrator;
     p.dt = dt;
-    p.forcesPerTime = forcesPerStep(integrator) / dt;
+    p.forcesPerTime = mdIntegrator(integrator).forcesPerStep() / dt; // throws for an unknown name
     auto model = startFrom(reference, integrator, dt);
     const double e0 = model->totalEnergy();
     const auto steps = std::max<long long>(1, std::llround(reference.horizon / dt));

@@ -36,10 +36,6 @@ struct SweepResult {
     std::vector<SweepOrder> orders;
 };
 
-// Force evaluations per step of each scheme (velocity Verlet 1, Forest–Ruth 3, RK4 4, …).
-int forcesPerStep(const std::string& integrator);
-int theoreticalOrder(const std::string& integrator);
-
 // Two equal disks (m = 1, d = 0.1) pressed together by an overlap of 0.02 and released: the gap
 // follows r(t) = d − δ cos ωt exactly while they touch, ω = √(2k). The horizon is 80 % of the quarter
 // period after which they part, so every scheme integrates one smooth contact and its error converges

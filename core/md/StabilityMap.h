@@ -4,7 +4,7 @@
 // Euler).
 #pragma once
 
-#include "methods/CellOutcome.h"
+#include "common/sweep/CellOutcome.h"
 
 #include <string>
 #include <vector>

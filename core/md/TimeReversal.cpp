@@ -73,7 +73,8 @@ public:
     }
 
 private:
-    // Harmonic repulsion (MdKernels.h, physics.md §1) with the minimum image, all pairs in index order.
+    // Harmonic repulsion (MdKernels.h, docs/gas.md#pair-force) with the minimum image, all pairs in index
+    // order.
     void accelerations() {
         for (int i = 0; i < n_; ++i) {
             Real fx = 0, fy = 0;

@@ -1,9 +1,9 @@
 // The two relaxations of the methods lab's MD-vs-DSMC comparison, each through its model's own code.
 #include "MdVsDsmc.h"
 
-#include "CellOutcome.h"
 #include "common/Philox.h"
 #include "common/Statistics.h"
+#include "common/sweep/CellOutcome.h"
 #include "dsmc/DsmcModel.h"
 #include "md/MdModel.h"
 
@@ -26,16 +26,16 @@ ParamValues dsmcParams(const TwoBeamSetup& setup) {
     const double temperature = setup.beamKT * defaults.mass() * kBeamSpeed * kBeamSpeed / kBoltzmann;
     return {{"velocity_components", 2.0},
             {"initial", "two-beams"},
-            {"count_1", static_cast<double>(setup.particles / 2)},
-            {"count_2", static_cast<double>(setup.particles - setup.particles / 2)},
-            {"drift_1", -kBeamSpeed},
-            {"drift_2", kBeamSpeed},
+            {"count_a", static_cast<double>(setup.particles / 2)},
+            {"count_b", static_cast<double>(setup.particles - setup.particles / 2)},
+            {"drift_a", -kBeamSpeed},
+            {"drift_b", kBeamSpeed},
             {"temperature", temperature},
             {"cross_section", "hard-sphere"},
             {"fn", kFn},
             {"cell_volume", kCellVolume},
             {"run_steps", 0.0},
-            {"hist_speed_max", 3.0 * kBeamSpeed}};
+            {"histogram_speed_max", 3.0 * kBeamSpeed}};
 }
 
 std::unique_ptr<DsmcModel> twoBeamCell(const TwoBeamSetup& setup) {
@@ -103,7 +103,7 @@ RelaxationRun relaxWithMd(const TwoBeamSetup& setup,
                      {"diameter_a", diameter},
                      {"stiffness", stiffness},
                      {"dt", setup.omegaDt / omega},
-                     {"integrator", "velocity-verlet"},
+                     {"integrator", mdIntegrator(MdIntegrator::VelocityVerlet).name},
                      {"box_width", 1.0},
                      {"box_height", 1.0},
                      {"max_particles", count}});

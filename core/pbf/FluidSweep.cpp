@@ -27,8 +27,8 @@ Preset smallDamBreak() {
                 {"fill_y0", 0.0},
                 {"fill_x1", 5.0},
                 {"fill_y1", 10.0},
-                {"world_width", 20.0},
-                {"world_height", 15.0}};
+                {"box_width", 20.0},
+                {"box_height", 15.0}};
     return p;
 }
 
@@ -44,10 +44,10 @@ FluidCell runFluidCell(const Preset& base, double dt, int iterations, const Flui
         PbfModel model;
         model.reset(preset);
         const PbfParams& p = model.parameters();
-        const double g = p.gravity ? std::hypot(p.gravityX, p.gravityY) : 0.0;
+        const double g = p.gravityOn ? p.gravityMagnitude() : 0.0;
         // Energy bound: falling the whole box height releases g H per unit mass; a fluid whose mean kinetic
         // energy exceeds that has made energy, not released it.
-        const double kineticLimit = setup.explosionFactor * std::max(g * p.worldHeight, 1.0);
+        const double kineticLimit = setup.explosionFactor * std::max(g * p.boxHeight, 1.0);
         const auto steps = std::max<long long>(1, std::llround(setup.duration / dt));
         double errorSum = 0;
         status.outcome = methods::CellOutcome::Stable;

@@ -6,7 +6,7 @@
 #pragma once
 
 #include "common/Preset.h"
-#include "methods/CellOutcome.h"
+#include "common/sweep/CellOutcome.h"
 
 namespace pl::pbf {
 

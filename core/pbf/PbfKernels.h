@@ -9,8 +9,17 @@
 #pragma once
 
 #include <cmath>
+#include <cstdint>
 #include <numbers>
 #include <string>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
+namespace pl {
+// Which constants the kernels use (the header comment): the seed's 3D ones, or those normalised in 2D.
+enum class PbfKernelConstants { Seed3d, Normalised2d };
+} // namespace pl
 
 namespace pl::pbf {
 
@@ -21,17 +30,17 @@ struct Kernels {
     double spiky = 0;     // W_spiky(r) = spiky (h − r)³ (for tests and the normalisation check)
     bool selfTerm = false;
 
-    static Kernels make(double h, const std::string& normalisation, bool selfTerm) {
+    static Kernels make(double h, PbfKernelConstants normalisation, bool selfTerm) {
         Kernels k;
         k.h = h;
         k.h2 = h * h;
         k.selfTerm = selfTerm;
         const double pi = std::numbers::pi;
-        if (normalisation == "2d") {
+        if (normalisation == PbfKernelConstants::Normalised2d) {
             k.poly6 = 4.0 / (pi * std::pow(h, 8));
             k.spiky = 10.0 / (pi * std::pow(h, 5));
             k.spikyGrad = 30.0 / (pi * std::pow(h, 5));
-        } else { // "seed-3d"
+        } else { // PbfKernelConstants::Seed3d
             k.poly6 = 315.0 / (64.0 * pi * std::pow(h, 9));
             k.spiky = 15.0 / (pi * std::pow(h, 6));
             k.spikyGrad = 45.0 / (pi * std::pow(h, 6));
@@ -69,6 +78,90 @@ struct ArtificialPressure {
         double p = ratio;
         for (int e = 1; e < n; ++e) p *= ratio;
         return -k * p;
+    }
+};
+
+// Two particles at once: the CPU pair passes run particles i and i + 1 side by side, each lane walking its
+// own neighbour row in its own order. Every lane performs exactly the scalar operations above, in the same
+// order (SSE2 has no fused multiply-add, and its square root and division are correctly rounded), so the
+// results are the scalar ones bit for bit at any lane or thread count.
+#if defined(__SSE2__)
+struct Lanes {
+    __m128d v;
+    static Lanes all(double a) { return {_mm_set1_pd(a)}; }
+    static Lanes load(const double* p) { return {_mm_load_pd(p)}; } // p 16-byte aligned
+    static Lanes gather(const double* p, std::uint32_t j0, std::uint32_t j1) {
+        return {_mm_loadh_pd(_mm_load_sd(p + j0), p + j1)};
+    }
+    void store(double* p) const { _mm_store_pd(p, v); }
+    double lane0() const { return _mm_cvtsd_f64(v); }
+    double lane1() const { return _mm_cvtsd_f64(_mm_unpackhi_pd(v, v)); }
+    friend Lanes operator+(Lanes a, Lanes b) { return {_mm_add_pd(a.v, b.v)}; }
+    friend Lanes operator-(Lanes a, Lanes b) { return {_mm_sub_pd(a.v, b.v)}; }
+    friend Lanes operator*(Lanes a, Lanes b) { return {_mm_mul_pd(a.v, b.v)}; }
+    friend Lanes operator/(Lanes a, Lanes b) { return {_mm_div_pd(a.v, b.v)}; }
+    friend Lanes operator-(Lanes a) { return {_mm_xor_pd(a.v, _mm_set1_pd(-0.0))}; } // exact, as scalar −a
+    Lanes& operator+=(Lanes b) { return *this = *this + b; }
+    friend Lanes sqrt(Lanes a) { return {_mm_sqrt_pd(a.v)}; }
+    // a where the lane's r2 is inside the support, i.e. not (r2 ≥ h² or r2 ≤ 0) as in the scalar test; +0
+    // elsewhere (NaN r2 keeps a, like the scalar code).
+    static Lanes insideSupport(Lanes a, Lanes r2, Lanes h2) {
+        const __m128d inside = _mm_and_pd(_mm_cmpnge_pd(r2.v, h2.v), _mm_cmpnle_pd(r2.v, _mm_setzero_pd()));
+        return {_mm_and_pd(inside, a.v)};
+    }
+};
+#else
+struct Lanes {
+    double a0, a1;
+    static Lanes all(double a) { return {a, a}; }
+    static Lanes load(const double* p) { return {p[0], p[1]}; }
+    static Lanes gather(const double* p, std::uint32_t j0, std::uint32_t j1) { return {p[j0], p[j1]}; }
+    void store(double* p) const {
+        p[0] = a0;
+        p[1] = a1;
+    }
+    double lane0() const { return a0; }
+    double lane1() const { return a1; }
+    friend Lanes operator+(Lanes a, Lanes b) { return {a.a0 + b.a0, a.a1 + b.a1}; }
+    friend Lanes operator-(Lanes a, Lanes b) { return {a.a0 - b.a0, a.a1 - b.a1}; }
+    friend Lanes operator*(Lanes a, Lanes b) { return {a.a0 * b.a0, a.a1 * b.a1}; }
+    friend Lanes operator/(Lanes a, Lanes b) { return {a.a0 / b.a0, a.a1 / b.a1}; }
+    friend Lanes operator-(Lanes a) { return {-a.a0, -a.a1}; }
+    Lanes& operator+=(Lanes b) { return *this = *this + b; }
+    friend Lanes sqrt(Lanes a) { return {std::sqrt(a.a0), std::sqrt(a.a1)}; }
+    static Lanes insideSupport(Lanes a, Lanes r2, Lanes h2) {
+        return {r2.a0 >= h2.a0 || r2.a0 <= 0.0 ? 0.0 : a.a0, r2.a1 >= h2.a1 || r2.a1 <= 0.0 ? 0.0 : a.a1};
+    }
+};
+#endif
+
+// Kernels::w, Kernels::gradFactor and ArtificialPressure for two pairs, with the constants kept in
+// registers. Outside the support they give +0 where the scalar code returns 0.0.
+struct LaneKernels {
+    Lanes h, h2, poly6, minusSpikyGrad, minusK, inverseReference;
+    int n = 4;
+    bool scorr = false;
+
+    LaneKernels(const Kernels& k, const ArtificialPressure& s)
+        : h(Lanes::all(k.h)), h2(Lanes::all(k.h2)), poly6(Lanes::all(k.poly6)),
+          minusSpikyGrad(Lanes::all(-k.spikyGrad)), minusK(Lanes::all(-s.k)),
+          inverseReference(Lanes::all(s.inverseReference)), n(s.n), scorr(s.k != 0.0) {}
+
+    Lanes w(Lanes r2) const {
+        const Lanes d = h2 - r2;
+        return Lanes::insideSupport(poly6 * d * d * d, r2, h2);
+    }
+    Lanes gradFactor(Lanes r2) const {
+        const Lanes r = sqrt(r2);
+        const Lanes d = h - r;
+        return Lanes::insideSupport(minusSpikyGrad * d * d / r, r2, h2);
+    }
+    Lanes artificialPressure(Lanes w) const {
+        if (!scorr) return Lanes::all(0.0);
+        const Lanes ratio = w * inverseReference;
+        Lanes p = ratio;
+        for (int e = 1; e < n; ++e) p = p * ratio;
+        return minusK * p;
     }
 };
 

@@ -1,5 +1,6 @@
 // PbfModel: parameters, reset, the step in the order of the paper's Algorithm 1, and the drain.
 #include "PbfModel.h"
+#include "PbfSpawnGrid.h"
 
 #include <algorithm>
 #include <cmath>
@@ -13,43 +14,16 @@ PbfModel::PbfModel() {
     reset();
 }
 
-ParamValues PbfModel::params() const {
-    return valuesOf(params_, PbfParams::fields());
-}
-
-void PbfModel::setParams(const ParamValues& values) {
-    PbfParams next = withValues(params_, PbfParams::fields(), values);
-    next.validate();
-    pullState();
-    params_ = next;
+void PbfModel::paramsChanged(const PbfParams& /*before*/) {
     refreshDerived();
     stateEdited();
 }
 
-void PbfModel::reset(const Preset& preset) {
-    if (preset.model != kind())
-        throw PresetError("model", "preset is for model '" + preset.model + "', not fluid");
-    PbfParams next;
-    try {
-        next = withValues(PbfParams{}, PbfParams::fields(), preset.params);
-        next.validate();
-    } catch (const ParamError& e) {
-        throw PresetError("params." + e.key(), e.what());
-    }
-    params_ = next;
-    seed_ = preset.seed;
-    obstacles_ = preset.obstacles;
-    reset();
-}
-
 void PbfModel::reset() {
     refreshDerived();
-    step_ = 0;
-    time_ = 0.0;
+    restartClock();
     drained_ = 0;
-    failure_.reset();
-    obstacleDrive_.clear();
-    for (Obstacle& o : obstacles_) o.vx = o.vy = 0.0;
+    restBodies();
     errorMean_.clear();
     errorMax_.clear();
     state_.clear();
@@ -57,18 +31,9 @@ void PbfModel::reset() {
     stateEdited();
 }
 
-Preset PbfModel::toPreset() const {
-    Preset p;
-    p.model = kind();
-    p.seed = seed_;
-    p.params = params();
-    p.obstacles = obstacles_;
-    return p;
-}
-
 void PbfModel::refreshDerived() {
     kernels_ = pbf::Kernels::make(params_.h, params_.kernel, params_.selfDensity);
-    if (params_.restDensitySource == "spawn-lattice") {
+    if (params_.restDensitySource == PbfRestDensitySource::SpawnLattice) {
         // The density of a particle deep inside the square spawn grid: what freshly spawned fluid has.
         const double d = params_.spacing();
         const int reach = static_cast<int>(std::ceil(params_.h / d));
@@ -88,8 +53,7 @@ void PbfModel::refreshDerived() {
 }
 
 pbf::Box PbfModel::confinementBox() const {
-    const double r = params_.particleRadius;
-    return {r, r, params_.worldWidth - r, params_.worldHeight - r};
+    return pbf::confinementBox(params_);
 }
 
 pbf::WallJitter PbfModel::wallJitter() const {
@@ -147,49 +111,8 @@ void PbfModel::drainOverCap() {
     drained_ += static_cast<long long>(excess);
 }
 
-void PbfModel::addObstacle(const Obstacle& obstacle) {
-    obstacles_.push_back(obstacle);
-}
-
-void PbfModel::removeObstacle(std::size_t index) {
-    if (index >= obstacles_.size()) throw std::out_of_range("no obstacle " + std::to_string(index));
-    obstacles_.erase(obstacles_.begin() + static_cast<long>(index));
-    obstacleDrive_.erase(index);
-}
-
-void PbfModel::dragObstacle(std::size_t index, double x, double y) {
-    if (index >= obstacles_.size()) throw std::out_of_range("no obstacle " + std::to_string(index));
-    obstacleDrive_.drag(index, std::clamp(x, 0.0, params_.worldWidth),
-                        std::clamp(y, 0.0, params_.worldHeight));
-}
-
-void PbfModel::releaseObstacle(std::size_t index) {
-    obstacleDrive_.release(index);
-}
-
-void PbfModel::placeObstacle(std::size_t index, double x, double y) {
-    if (index >= obstacles_.size()) throw std::out_of_range("no obstacle " + std::to_string(index));
-    Obstacle& o = obstacles_[index];
-    o.x = std::clamp(x, 0.0, params_.worldWidth);
-    o.y = std::clamp(y, 0.0, params_.worldHeight);
-    o.vx = o.vy = 0.0;
-    obstacleDrive_.stop(index);
-}
-
 double PbfModel::toolSpeed() const {
     return params_.toolSpeed * params_.waveSpeed();
-}
-
-void PbfModel::scaleKineticEnergy(double factor) {
-    if (!(factor > 0) || !std::isfinite(factor))
-        throw std::invalid_argument("kinetic energy factor must be positive and finite");
-    pullState();
-    const double s = std::sqrt(factor);
-    for (std::size_t i = 0; i < state_.size(); ++i) {
-        state_.vx[i] *= s;
-        state_.vy[i] *= s;
-    }
-    stateEdited();
 }
 
 } // namespace pl

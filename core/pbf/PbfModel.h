@@ -10,6 +10,7 @@
 #include "PbfState.h"
 #include "common/KinematicDrive.h"
 #include "common/Model.h"
+#include "common/ModelBase.h"
 
 namespace pl {
 
@@ -24,27 +25,22 @@ struct PbfObservables {
     double kinetic = 0;          // Σ ½ v² (unit masses) [L²/s²]
     double maxSpeed = 0;
     double neighboursMean = 0, neighboursMin = 0, neighboursMax = 0; // within h
-    double frontZ = NAN, frontT = NAN; // dam-break surge front (physics.md §3); NaN without an initial block
-    long long drained = 0;             // removed by the drain since reset
+    // Dam-break surge front (docs/fluid.md#dam-break-front); NaN without an initial block.
+    double frontZ = NAN, frontT = NAN;
+    long long drained = 0; // removed by the drain since reset
 };
 
-class PbfModel : public Model, public SceneTools {
+// Parameters, presets, the clock, obstacles and the tools' rules come from SceneModelBase
+// (common/ModelBase.h); this class holds the fluid's physics.
+class PbfModel : public SceneModelBase<PbfParams, PbfState> {
 public:
     PbfModel();
     ~PbfModel() override = default;
 
     std::string kind() const override { return "fluid"; }
-    const std::vector<ParamSpec>& paramSpecs() const override { return PbfParams::describe(); }
-    ParamValues params() const override;
-    void setParams(const ParamValues& values) override;
-    void reset(const Preset& preset) override;
+    using ModelBase::reset;
     void reset() override;
-    Preset toPreset() const override;
     void step() override;
-    std::int64_t stepCount() const override { return step_; }
-    double time() const override { return time_; }
-    std::size_t particleCount() const override { return state_.size(); }
-    std::optional<ModelFailure> failure() const override { return failure_; }
     std::int64_t plannedSteps() const override { return params_.runSteps; }
     bool reversible() const override { return false; } // the projections dissipate
     std::vector<std::string> seriesColumns() const override;
@@ -53,28 +49,14 @@ public:
     std::vector<NamedProfile> profiles() const override;
     void writeParticles(std::ostream& out) const override;
     SceneView sceneView() const override;
-    SceneTools* tools() override { return this; }
     StateRecord saveState() const override; // PbfSnapshot.cpp
     void restoreState(const StateRecord& state) override;
 
-    // SceneTools
-    const std::vector<Obstacle>& obstacles() const override { return obstacles_; }
-    void addObstacle(const Obstacle& obstacle) override;
-    void removeObstacle(std::size_t index) override;
-    void dragObstacle(std::size_t index, double x, double y) override;
-    void releaseObstacle(std::size_t index) override;
-    void placeObstacle(std::size_t index, double x, double y) override;
+    // SceneTools: the obstacles' tools and heat / cool are SceneModelBase's.
     double toolSpeed() const override;
-    bool bodiesMoving() const override { return obstacleDrive_.moving(); }
     std::string spawnInRectangle(double x0, double y0, double x1, double y1) override;
-    void scaleKineticEnergy(double factor) override;
 
     // Fluid-specific API
-    const PbfParams& parameters() const { return params_; }
-    const PbfState& state() const {
-        pullState();
-        return state_;
-    }
     PbfObservables observe() const;
     double restDensity() const { return restDensity_; }
     // Mean and max density error measured before each iteration of the last step, then after the last one.
@@ -82,13 +64,13 @@ public:
     std::vector<double> iterationErrorMax() const;
 
 protected:
-    // A backend that keeps the particles elsewhere (the GPU) brings state_ (and the per-iteration errors)
-    // up to date here before the CPU code reads them, and learns through stateEdited() of CPU changes.
-    virtual void pullState() const {}
-    virtual void stateEdited() {}
+    // A GPU backend's pullState() also brings the per-iteration errors up to date.
+    explicit PbfModel(DeferReset) {}
+    void paramsChanged(const PbfParams& before) override;
+    Area areaOf(const PbfParams& p) const override { return {0.0, 0.0, p.boxWidth, p.boxHeight}; }
     SceneView sceneFrame() const; // the scene without its particles
     // Moves the dragged obstacles one step toward their targets at bounded speed (KinematicDrive.h).
-    void advanceBodies() { obstacleDrive_.advance(obstacles_, toolSpeed(), params_.dt); }
+    void advanceBodies() { advanceObstacles(params_.dt); }
 
     // Algorithm 1, line by line.
     void applyExternalForcesAndPredict();
@@ -112,11 +94,6 @@ protected:
     // ρ_i/ρ₀ − 1 of every particle at the current positions.
     std::vector<double> densityConstraints(std::vector<int>* neighboursWithinH = nullptr) const;
 
-    PbfParams params_;
-    std::uint64_t seed_ = 1;
-    std::vector<Obstacle> obstacles_;
-    ObstacleDrive obstacleDrive_;
-    mutable PbfState state_; // mutable: a GPU backend fills it lazily in pullState()
     pbf::Kernels kernels_;
     pbf::ArtificialPressure scorr_;
     double restDensity_ = 1.0;
@@ -132,10 +109,7 @@ protected:
     pbf::Neighbours neighbours_;
 
     mutable std::vector<double> errorMean_, errorMax_; // before iteration k of the last step
-    std::int64_t step_ = 0;
-    double time_ = 0.0;
     long long drained_ = 0;
-    std::optional<ModelFailure> failure_;
 };
 
 } // namespace pl

@@ -1,6 +1,8 @@
-// Neighbour lists for the fluid, rebuilt every step from the predicted positions: one pass per particle
-// over the 3×3 cell block into a fixed-capacity row (as a GPU kernel fills them), then packed into CSR
-// rows. Cell-ordered copies of the positions make each scanned block row one contiguous read.
+// Neighbour lists for the fluid, rebuilt every step from the predicted positions (the paper's Algorithm 1
+// finds neighbours once per step and keeps them through the solver iterations): one branch-free pass per
+// particle over the 3×3 cell block into a fixed-capacity row (as a GPU kernel fills them), over
+// cell-ordered copies of the positions so each scanned block row is one contiguous read. The rows are then
+// packed either into CSR rows or into lane pairs for the two-wide pair passes of PbfSolver.cpp.
 #pragma once
 
 #include "common/CellList.h"
@@ -13,18 +15,30 @@ namespace pl::pbf {
 class Neighbours {
 public:
     // Lists every j ≠ i with |x_i − x_j| < reach, in cell order; deterministic for any thread count.
+    // CSR rows: neighbours of i are entries()[offsets()[i] … offsets()[i + 1]).
     void build(const double* x, const double* y, std::size_t count, double reach, double width,
                double height);
-
-    // Neighbours of i are entries()[offsets()[i] … offsets()[i + 1]).
     const std::uint32_t* offsets() const { return offsets_.data(); }
     const std::uint32_t* entries() const { return entries_.data(); }
-    std::size_t pairs() const { return entries_.size(); }
+
+    // The same rows, in the same order, as lane pairs: particles 2b and 2b + 1 form block b, whose rows
+    // are interleaved slot by slot, laneEntries()[2 (blockStart()[b] + t) + lane] being neighbour t of
+    // particle 2b + lane. The shorter row of a block is padded with the particle itself, at distance 0,
+    // where every kernel is zero. An odd count leaves the last block with one particle in both lanes.
+    void buildLanePairs(const double* x, const double* y, std::size_t count, double reach, double width,
+                        double height);
+    std::size_t blocks() const { return blockStart_.empty() ? 0 : blockStart_.size() - 1; }
+    const std::uint32_t* blockStart() const { return blockStart_.data(); }
+    const std::uint32_t* laneEntries() const { return laneEntries_.data(); }
+    std::size_t laneSlots() const { return laneEntries_.size(); }  // 2 × blockStart()[blocks()]
+    const std::uint32_t* counts() const { return counts_.data(); } // real neighbours of each particle
 
 private:
+    void search(const double* x, const double* y, std::size_t count, double reach, double width,
+                double height);
     CellList cells_;
     std::vector<double> sortedX_, sortedY_;
-    std::vector<std::uint32_t> rows_, counts_, offsets_, entries_;
+    std::vector<std::uint32_t> rows_, counts_, offsets_, entries_, blockStart_, laneEntries_;
     std::uint32_t capacity_ = 32;
 };
 

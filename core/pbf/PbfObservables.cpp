@@ -1,6 +1,7 @@
 // What the fluid reports: density error (per step and per iteration), kinetic energy, neighbour counts,
 // and the dam-break surge front in Martin & Moyce's units.
 #include "PbfModel.h"
+#include "PbfSeries.h"
 
 #include "common/Parallel.h"
 
@@ -16,7 +17,7 @@ std::vector<double> PbfModel::densityConstraints(std::vector<int>* neighboursWit
     if (neighboursWithinH) neighboursWithinH->assign(count, 0);
     if (count == 0) return c;
     pbf::Neighbours list;
-    list.build(state_.x.data(), state_.y.data(), count, params_.h, params_.worldWidth, params_.worldHeight);
+    list.build(state_.x.data(), state_.y.data(), count, params_.h, params_.boxWidth, params_.boxHeight);
     const auto n = static_cast<long long>(count);
     const pbf::Kernels k = kernels_;
 #pragma omp parallel for schedule(static) if (n >= kParallelMinParticles)
@@ -65,10 +66,10 @@ PbfObservables PbfModel::observe() const {
     o.densityRatioMean = ratio / count;
     o.neighboursMean = within / count;
 
-    // Dam break (physics.md §3): a column of base a and height n² a; z is measured from the column's back
-    // (the left wall in the preset) to the rightmost particle on the floor, plus half a spacing so that
-    // Z(0) = 1 exactly; T = n t √(g/a).
-    const double g = params_.gravity ? std::hypot(params_.gravityX, params_.gravityY) : 0.0;
+    // Dam break (docs/fluid.md#dam-break-front): a column of base a and height n² a; z is measured from the
+    // column's back (the left wall in the preset) to the rightmost particle on the floor, plus half a spacing
+    // so that Z(0) = 1 exactly; T = n t √(g/a).
+    const double g = params_.gravityOn ? params_.gravityMagnitude() : 0.0;
     if (params_.hasFill() && g > 0) {
         const double a = params_.fillX1 - params_.fillX0;
         const double aspect = std::sqrt((params_.fillY1 - params_.fillY0) / a);
@@ -84,43 +85,38 @@ PbfObservables PbfModel::observe() const {
     return o;
 }
 
+const SeriesTable<PbfObservables>& pbfSeriesTable() {
+    using O = PbfObservables;
+    static const SeriesTable<O> table{
+        {{"step", "", "step"}, [](const O& o) { return static_cast<double>(o.step); }},
+        {{"time", "s", "time"}, [](const O& o) { return o.time; }},
+        {{"particles", "", "particles"}, [](const O& o) { return static_cast<double>(o.particles); }},
+        {{"density_error_mean", "", "mean compression ρ/ρ₀ − 1"},
+         [](const O& o) { return o.densityErrorMean; }},
+        {{"density_error_max", "", "largest compression ρ/ρ₀ − 1"},
+         [](const O& o) { return o.densityErrorMax; }},
+        {{"density_ratio_mean", "", "mean ρ/ρ₀"}, [](const O& o) { return o.densityRatioMean; }},
+        {{"kinetic", "L²/s²", "kinetic energy Σ ½ v²"}, [](const O& o) { return o.kinetic; }},
+        {{"max_speed", "L/s", "largest speed"}, [](const O& o) { return o.maxSpeed; }},
+        {{"neighbours_mean", "", "mean neighbours within h"}, [](const O& o) { return o.neighboursMean; }},
+        {{"neighbours_min", "", "fewest neighbours within h"}, [](const O& o) { return o.neighboursMin; }},
+        {{"neighbours_max", "", "most neighbours within h"}, [](const O& o) { return o.neighboursMax; }},
+        {{"front_Z", "", "surge front Z = z / a"}, [](const O& o) { return o.frontZ; }},
+        {{"front_T", "", "front time T = n t √(g/a)"}, [](const O& o) { return o.frontT; }},
+        // The shallow-water (Ritter) front moves at dZ/dT = 2: the bound a real front stays below.
+        {{"front_Z_shallow_water", "", "shallow-water bound 1 + 2T"},
+         [](const O& o) { return std::isfinite(o.frontT) ? 1.0 + 2.0 * o.frontT : NAN; }},
+        {{"drained", "", "removed by the drain"}, [](const O& o) { return static_cast<double>(o.drained); }},
+    };
+    return table;
+}
+
 std::vector<std::string> PbfModel::seriesColumns() const {
-    return {"step",
-            "time",
-            "particles",
-            "density_error_mean",
-            "density_error_max",
-            "density_ratio_mean",
-            "kinetic",
-            "max_speed",
-            "neighbours_mean",
-            "neighbours_min",
-            "neighbours_max",
-            "front_Z",
-            "front_T",
-            "front_Z_shallow_water",
-            "drained"};
+    return pbfSeriesTable().names();
 }
 
 std::vector<double> PbfModel::sampleSeries() {
-    const PbfObservables o = observe();
-    // The shallow-water (Ritter) front moves at dZ/dT = 2: the bound a real front stays below.
-    const double ritter = std::isfinite(o.frontT) ? 1.0 + 2.0 * o.frontT : NAN;
-    return {static_cast<double>(o.step),
-            o.time,
-            static_cast<double>(o.particles),
-            o.densityErrorMean,
-            o.densityErrorMax,
-            o.densityRatioMean,
-            o.kinetic,
-            o.maxSpeed,
-            o.neighboursMean,
-            o.neighboursMin,
-            o.neighboursMax,
-            o.frontZ,
-            o.frontT,
-            ritter,
-            static_cast<double>(o.drained)};
+    return pbfSeriesTable().sample(observe());
 }
 
 std::vector<double> PbfModel::iterationErrorMean() const {

@@ -12,16 +12,16 @@ constexpr double kMaxParticles = 1 << 24; // 16 M
 
 void PbfParams::validate() const {
     const auto n = [](double v) { return formatNumber(v, 6); };
-    if (2.0 * particleRadius >= std::min(worldWidth, worldHeight))
+    if (2.0 * particleRadius >= std::min(boxWidth, boxHeight))
         throw ParamError("particle_radius", "{particle_radius} = " + n(particleRadius) +
                                                 " is too large: a particle does not fit in the " +
-                                                n(worldWidth) + " × " + n(worldHeight) + " box");
-    if (neighbourRadius() * 4 > std::min(worldWidth, worldHeight))
-        throw ParamError("h", "{h} = " + n(h) + " is too large for the " + n(worldWidth) + " × " +
-                                  n(worldHeight) + " box: it needs at least 4 h across");
-    if (hasFill() && (fillX0 < 0 || fillY0 < 0 || fillX1 > worldWidth || fillY1 > worldHeight))
-        throw ParamError("fill_x1", "the initial block must lie inside the box [0, " + n(worldWidth) +
-                                        "] × [0, " + n(worldHeight) + "]");
+                                                n(boxWidth) + " × " + n(boxHeight) + " box");
+    if (neighbourRadius() * 4 > std::min(boxWidth, boxHeight))
+        throw ParamError("h", "{h} = " + n(h) + " is too large for the " + n(boxWidth) + " × " +
+                                  n(boxHeight) + " box: it needs at least 4 h across");
+    if (hasFill() && (fillX0 < 0 || fillY0 < 0 || fillX1 > boxWidth || fillY1 > boxHeight))
+        throw ParamError("fill_x1", "the initial block must lie inside the box [0, " + n(boxWidth) +
+                                        "] × [0, " + n(boxHeight) + "]");
     if (hasFill() && fillCount() > maxParticles)
         throw ParamError("max_particles",
                          "the initial block holds " + std::to_string(fillCount()) +
@@ -46,18 +46,17 @@ const std::vector<ParamField<PbfParams>>& PbfParams::fields() {
         const auto real = [&f](double P::*member, ParamSpec spec) {
             f.push_back(bindReal(member, std::move(spec)));
         };
-        real(&P::worldWidth, makeSpec("world_width", "Box width", "L", "World",
-                                      "Width of the tank (seed 80).", 1, 1e5, 1, d.worldWidth));
-        real(&P::worldHeight, makeSpec("world_height", "Box height", "L", "World",
-                                       "Height of the tank (seed 40).", 1, 1e5, 1, d.worldHeight));
-        f.push_back(
-            bindBool(&P::gravity, makeSpec("gravity", "Gravity on", "", "World",
-                                           "The seed's gravity toggle (key G).", 0, 1, 1, d.gravity, true)));
+        real(&P::boxWidth, makeSpec("box_width", "Box width", "L", "World", "Width of the tank (seed 80).", 1,
+                                    1e5, 1, d.boxWidth));
+        real(&P::boxHeight, makeSpec("box_height", "Box height", "L", "World",
+                                     "Height of the tank (seed 40).", 1, 1e5, 1, d.boxHeight));
+        f.push_back(bindBool(&P::gravityOn,
+                             makeSpec("gravity_on", "Gravity on", "", "World",
+                                      "The seed's gravity toggle (key G).", 0, 1, 1, d.gravityOn, true)));
+        real(&P::gravity, makeSpec("gravity", "Gravity", "L/s²", "World",
+                                   "Downward acceleration; 0 for none.", -1e4, 1e4, 0.5, d.gravity, true));
         real(&P::gravityX, makeSpec("gravity_x", "Gravity x", "L/s²", "World",
                                     "Horizontal component of gravity.", -1e4, 1e4, 0.5, d.gravityX, true));
-        real(&P::gravityY,
-             makeSpec("gravity_y", "Gravity y", "L/s²", "World", "Vertical component of gravity (seed −9.8).",
-                      -1e4, 1e4, 0.5, d.gravityY, true));
 
         real(&P::dt, makeSpec("dt", "Time step", "s", "Solver", "Step Δt (seed 1/20 = 0.05).", 1e-6, 1, 0.005,
                               d.dt, true));
@@ -78,21 +77,21 @@ const std::vector<ParamField<PbfParams>>& PbfParams::fields() {
         real(&P::epsilon, makeSpec("epsilon", "Relaxation ε", "", "Solver",
                                    "Added to the constraint's gradient norm; larger is softer (seed 100).", 0,
                                    1e6, 1, d.epsilon, true));
-        f.push_back(
-            bindText(&P::kernel, makeChoice("kernel", "Kernel constants", "Solver",
-                                            "seed-3d: poly6 315/(64π h⁹), spiky 45/(π h⁶), as written "
-                                            "(3D constants in 2D); 2d: 4/(π h⁸) and 30/(π h⁵).",
-                                            {"seed-3d", "2d"}, true)));
+        f.push_back(bindChoice(&P::kernel, makeChoice("kernel", "Kernel constants", "Solver",
+                                                      "seed-3d: poly6 315/(64π h⁹), spiky 45/(π h⁶), as "
+                                                      "written (3D constants in 2D); 2d: 4/(π h⁸) and "
+                                                      "30/(π h⁵).",
+                                                      true)));
         f.push_back(
             bindBool(&P::selfDensity,
                      makeSpec("self_density", "Self term in ρ", "", "Solver",
                               "Include W(0) in each particle's density, as SPH does (the seed omits it).", 0,
                               1, 1, d.selfDensity, true)));
-        f.push_back(bindText(&P::restDensitySource,
-                             makeChoice("rest_density_source", "Rest density from", "Solver",
-                                        "value: ρ₀ = rest_density; spawn-lattice: ρ₀ is the density of a "
-                                        "particle inside the spawn grid, so spawned fluid starts at rest.",
-                                        {"value", "spawn-lattice"}, true)));
+        f.push_back(bindChoice(&P::restDensitySource,
+                               makeChoice("rest_density_source", "Rest density from", "Solver",
+                                          "value: ρ₀ = rest_density; spawn-lattice: ρ₀ is the density of a "
+                                          "particle inside the spawn grid, so spawned fluid starts at rest.",
+                                          true)));
         real(&P::restDensity,
              makeSpec("rest_density", "Rest density ρ₀", "", "Solver",
                       "Target density with unit masses (seed 1).", 1e-9, 1e9, 0.1, d.restDensity, true));
@@ -149,8 +148,24 @@ const std::vector<ParamField<PbfParams>>& PbfParams::fields() {
     return list;
 }
 
+double PbfParams::gravityMagnitude() const {
+    return std::hypot(gravityX, gravity);
+}
+
 double PbfParams::waveSpeed() const {
-    return std::sqrt(std::hypot(gravityX, gravityY) * worldHeight);
+    return std::sqrt(gravityMagnitude() * boxHeight);
+}
+
+const ChoiceTable<PbfKernelConstants>& choiceTable(PbfKernelConstants) {
+    static const ChoiceTable<PbfKernelConstants> table{{PbfKernelConstants::Seed3d, "seed-3d"},
+                                                       {PbfKernelConstants::Normalised2d, "2d"}};
+    return table;
+}
+
+const ChoiceTable<PbfRestDensitySource>& choiceTable(PbfRestDensitySource) {
+    static const ChoiceTable<PbfRestDensitySource> table{
+        {PbfRestDensitySource::Value, "value"}, {PbfRestDensitySource::SpawnLattice, "spawn-lattice"}};
+    return table;
 }
 
 const std::vector<ParamSpec>& PbfParams::describe() {

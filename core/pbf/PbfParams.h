@@ -2,6 +2,7 @@
 // the CLI and the UI. Defaults are the seed's (80 × 40 world, h = 1.1, ε = 100, 5 iterations, Δt = 1/20).
 #pragma once
 
+#include "PbfKernels.h"
 #include "common/ParamSpec.h"
 
 #include <string>
@@ -9,24 +10,31 @@
 
 namespace pl {
 
+// Where the rest density ρ₀ comes from: the value rest_density, or the density of the spawn lattice.
+enum class PbfRestDensitySource { Value, SpawnLattice };
+// The names of each choice as preset files and the command line spell them.
+const ChoiceTable<PbfKernelConstants>& choiceTable(PbfKernelConstants);
+const ChoiceTable<PbfRestDensitySource>& choiceTable(PbfRestDensitySource);
+
 struct PbfParams {
     // World and external field
-    double worldWidth = 80.0, worldHeight = 40.0; // box [0, W] × [0, H]
-    bool gravity = true;                          // the seed's toggle
-    double gravityX = 0.0, gravityY = -9.8;       // [L/s²]
+    double boxWidth = 80.0, boxHeight = 40.0; // box [0, W] × [0, H]
+    bool gravityOn = true;                    // the seed's toggle (key G), shared with the gas
+    double gravity = 9.8;                     // downward acceleration [L/s²]; negative pulls up
+    double gravityX = 0.0;                    // horizontal acceleration [L/s²]
 
     // Solver (Macklin & Müller 2013)
-    double dt = 0.05;                        // [s]
-    long long runSteps = 0;                  // a run stops here; 0 runs on (the seed)
-    long long iterations = 5;                // Jacobi iterations of λ and Δx per step
-    double h = 1.1;                          // kernel support radius [L]
-    double neighbourFactor = 1.05;           // neighbour search radius / h
-    double epsilon = 100.0;                  // constraint relaxation ε
-    std::string kernel = "seed-3d";          // seed-3d: 3D constants as written; 2d: normalised in 2D
-    bool selfDensity = false;                // ρ_i includes W(0) (the paper); the seed omits it
-    std::string restDensitySource = "value"; // value: rest_density; spawn-lattice: ρ of the spawn grid
-    double restDensity = 1.0;                // ρ₀
-    double scorrK = 0.001, scorrDq = 0.3;    // s_corr = −k (W(r) / W(Δq h))ⁿ
+    double dt = 0.05;                                       // [s]
+    long long runSteps = 0;                                 // a run stops here; 0 runs on (the seed)
+    long long iterations = 5;                               // Jacobi iterations of λ and Δx per step
+    double h = 1.1;                                         // kernel support radius [L]
+    double neighbourFactor = 1.05;                          // neighbour search radius / h
+    double epsilon = 100.0;                                 // constraint relaxation ε
+    PbfKernelConstants kernel = PbfKernelConstants::Seed3d; // 3D constants as written, or normalised in 2D
+    bool selfDensity = false; // ρ_i includes W(0) (the paper); the seed omits it
+    PbfRestDensitySource restDensitySource = PbfRestDensitySource::Value; // or ρ of the spawn grid
+    double restDensity = 1.0;                                             // ρ₀
+    double scorrK = 0.001, scorrDq = 0.3; // s_corr = −k (W(r) / W(Δq h))ⁿ
     long long scorrN = 4;
     double particleRadius = 0.3; // walls and obstacles keep centres this far away [L]
     double xsph = 0.0;           // XSPH viscosity c (paper: 0.01); 0: off
@@ -45,6 +53,11 @@ struct PbfParams {
     // Display
     double colourSpeedMax = 5.0; // speed at the red end of the colour scale [L/s]
 
+    // The acceleration acting now [L/s²]: zero while gravity is off.
+    double accelerationX() const { return gravityOn ? gravityX : 0.0; }
+    double accelerationY() const { return gravityOn ? -gravity : 0.0; }
+    // |g| [L/s²], also while switched off.
+    double gravityMagnitude() const;
     double spacing() const { return spawnSpacing * h; }
     double neighbourRadius() const { return neighbourFactor * h; }
     bool hasFill() const { return fillX1 > fillX0 && fillY1 > fillY0; }

@@ -1,6 +1,7 @@
 // The fluid as the viewport and the mouse tools see it: the seed's sea-green tank with blue → red speed
 // colours, and the drag-to-spawn rectangle filled on a grid of spacing 0.8 h.
 #include "PbfModel.h"
+#include "PbfSpawnGrid.h"
 
 #include "common/CellList.h"
 
@@ -38,8 +39,8 @@ SceneView PbfModel::sceneFrame() const {
     SceneView view;
     view.left = 0;
     view.bottom = 0;
-    view.right = params_.worldWidth;
-    view.top = params_.worldHeight;
+    view.right = params_.boxWidth;
+    view.top = params_.boxHeight;
     view.background = {46 / 255.0f, 139 / 255.0f, 87 / 255.0f}; // the seed's #2E8B57
     view.colours = ColourMap::BlueRed;
     view.colourLabel = "speed";
@@ -75,17 +76,12 @@ std::string PbfModel::spawnInRectangle(double x0, double y0, double x1, double y
 
 // A grid of spacing δ = 0.8 h centred in the rectangle (a point: one particle), at rest.
 PbfModel::Spawned PbfModel::spawnLattice(double x0, double y0, double x1, double y1) {
-    if (x1 < x0) std::swap(x0, x1);
-    if (y1 < y0) std::swap(y0, y1);
     const double d = params_.spacing();
-    const auto columns = std::max<long long>(1, static_cast<long long>(std::floor((x1 - x0) / d + 1e-6)));
-    const auto rows = std::max<long long>(1, static_cast<long long>(std::floor((y1 - y0) / d + 1e-6)));
-    const double startX = 0.5 * (x0 + x1) - 0.5 * d * static_cast<double>(columns - 1);
-    const double startY = 0.5 * (y0 + y1) - 0.5 * d * static_cast<double>(rows - 1);
+    const pbf::SpawnGrid grid = pbf::SpawnGrid::centred(x0, y0, x1, y1, d);
 
     CellList existing;
     const double separation = kMinimumSeparation * d;
-    existing.configure(0, 0, params_.worldWidth, params_.worldHeight, separation);
+    existing.configure(0, 0, params_.boxWidth, params_.boxHeight, separation);
     existing.build(state_.x.data(), state_.y.data(), state_.size());
     const auto tooClose = [&](double x, double y) {
         const int cx = existing.cellX(x), cy = existing.cellY(y);
@@ -105,12 +101,10 @@ PbfModel::Spawned PbfModel::spawnLattice(double x0, double y0, double x1, double
     const std::size_t existingCount = state_.size();
     const pbf::Box box = confinementBox();
     Spawned result;
-    for (long long r = 0; r < rows; ++r) {
-        for (long long c = 0; c < columns; ++c) {
-            const double x = startX + d * static_cast<double>(c), y = startY + d * static_cast<double>(r);
-            double cx = x, cy = y;
-            pbf::confine(box, obstacles_, params_.particleRadius, {}, 0, cx, cy);
-            if (std::hypot(cx - x, cy - y) > 1e-9 * d) { // a grid point on the wall itself is inside
+    for (long long r = 0; r < grid.rows; ++r) {
+        for (long long c = 0; c < grid.columns; ++c) {
+            const double x = grid.x(c), y = grid.y(r);
+            if (pbf::outsideFluidDomain(box, obstacles_, params_.particleRadius, d, x, y)) {
                 ++result.refusedOutside;
             } else if (existingCount > 0 && tooClose(x, y)) {
                 ++result.refusedOverlap;

@@ -7,8 +7,7 @@ namespace pl {
 StateRecord PbfModel::saveState() const {
     pullState();
     StateRecord r;
-    r.put("step", static_cast<double>(step_));
-    r.put("time", time_);
+    saveClock(r);
     r.put("drained", static_cast<double>(drained_));
     r.put("x", state_.x);
     r.put("y", state_.y);
@@ -30,13 +29,11 @@ void PbfModel::restoreState(const StateRecord& r) {
     s.vx = r.array<double>("vx", n);
     s.vy = r.array<double>("vy", n);
     std::vector<double> errorMean = r.array<double>("error_mean"), errorMax = r.array<double>("error_max");
-    step_ = static_cast<std::int64_t>(r.scalar("step"));
-    time_ = r.scalar("time");
+    restoreClock(r);
     drained_ = static_cast<long long>(r.scalar("drained"));
     state_ = std::move(s);
     errorMean_ = std::move(errorMean);
     errorMax_ = std::move(errorMax);
-    failure_.reset();
     obstacleDrive_.clear();
     stateEdited();
 }

@@ -26,8 +26,8 @@ void PbfModel::applyExternalForcesAndPredict() {
     lambda_.resize(count);
     constraint_.resize(count);
     const double dt = params_.dt;
-    const double gx = params_.gravity ? params_.gravityX : 0.0;
-    const double gy = params_.gravity ? params_.gravityY : 0.0;
+    const double gx = params_.accelerationX();
+    const double gy = params_.accelerationY();
     const pbf::Box box = confinementBox();
     const pbf::WallJitter jitter = wallJitter();
     const double margin = params_.particleRadius;
@@ -44,23 +44,45 @@ void PbfModel::applyExternalForcesAndPredict() {
     }
 }
 
-// Lines 5–7: neighbours within the search radius (1.05 h in the seed) of the predicted positions.
+// Lines 5–7: neighbours within the search radius (1.05 h in the seed) of the predicted positions, found
+// once and kept through the iterations; the corrections move particles by a fraction of h.
 void PbfModel::findNeighbours() {
-    neighbours_.build(px_.data(), py_.data(), state_.size(), params_.neighbourRadius(), params_.worldWidth,
-                      params_.worldHeight);
+    neighbours_.buildLanePairs(px_.data(), py_.data(), state_.size(), params_.neighbourRadius(),
+                               params_.boxWidth, params_.boxHeight);
 }
+
+namespace {
+// The two particles of lane-pair block b (the same one twice in an odd count's last block).
+struct BlockPair {
+    std::uint32_t first, second;
+    BlockPair(long long b, long long count)
+        : first(static_cast<std::uint32_t>(2 * b)),
+          second(static_cast<std::uint32_t>(std::min(2 * b + 1, count - 1))) {}
+    pbf::Lanes gather(const double* values) const { return pbf::Lanes::gather(values, first, second); }
+    void scatter(pbf::Lanes v, double* values) const {
+        values[first] = v.lane0();
+        if (second != first) values[second] = v.lane1(); // a lone particle fills both lanes alike
+    }
+};
+
+long long blockCount(const pbf::Neighbours& list) {
+    return static_cast<long long>(list.blocks());
+}
+} // namespace
 
 // Lines 9–11: ρ_i = Σ_j W(x_i − x_j) (eq. 2), C_i = ρ_i/ρ₀ − 1 (eq. 1),
 // λ_i = −C_i / (Σ_k |∇_k C_i|² + ε) (eq. 11) with ∇_i C_i = Σ_j ∇W_ij / ρ₀ and ∇_j C_i = −∇W_ij / ρ₀ (eq. 8).
-// The pair terms the correction pass needs at these same positions are kept: ∇W_ij per neighbour entry,
+// The pair terms the correction pass needs at these same positions are kept: ∇W_ij per neighbour slot,
 // G_i = Σ_j ∇W_ij and S_i = Σ_j s_corr,ij ∇W_ij, so that pass costs one multiply-add per pair.
+// Two particles per step of the loop, each summing over its own row in row order (PbfKernels.h, Lanes).
 void PbfModel::computeLambdas(std::size_t iteration) {
     const long long n = loopCount(state_);
+    const long long blocks = blockCount(neighbours_);
     const double *px = px_.data(), *py = py_.data();
     double *lambda = lambda_.data(), *constraint = constraint_.data();
-    const std::uint32_t *offsets = neighbours_.offsets(), *entries = neighbours_.entries();
-    pairGradX_.resize(offsets[n]);
-    pairGradY_.resize(offsets[n]);
+    const std::uint32_t *blockStart = neighbours_.blockStart(), *lanes = neighbours_.laneEntries();
+    pairGradX_.resize(neighbours_.laneSlots());
+    pairGradY_.resize(neighbours_.laneSlots());
     gradSumX_.resize(state_.size());
     gradSumY_.resize(state_.size());
     scorrSumX_.resize(state_.size());
@@ -68,36 +90,40 @@ void PbfModel::computeLambdas(std::size_t iteration) {
     double *pgx = pairGradX_.data(), *pgy = pairGradY_.data();
     double *sumGx = gradSumX_.data(), *sumGy = gradSumY_.data(), *sumSx = scorrSumX_.data(),
            *sumSy = scorrSumY_.data();
-    const pbf::Kernels k = kernels_;
-    const pbf::ArtificialPressure scorr = scorr_;
-    const double inverseRest = 1.0 / restDensity_;
-    const double epsilon = params_.epsilon;
+    const pbf::LaneKernels k(kernels_, scorr_);
+    const pbf::Lanes selfWeight = pbf::Lanes::all(kernels_.selfWeight());
+    const pbf::Lanes inverseRest = pbf::Lanes::all(1.0 / restDensity_), one = pbf::Lanes::all(1.0);
+    const pbf::Lanes epsilon = pbf::Lanes::all(params_.epsilon), zero = pbf::Lanes::all(0.0);
 #pragma omp parallel for schedule(static) if (n >= kParallelMinParticles)
-    for (long long i = 0; i < n; ++i) {
-        double rho = k.selfWeight(), gx = 0, gy = 0, sumSquares = 0, sx = 0, sy = 0;
-        for (std::uint32_t e = offsets[i]; e < offsets[i + 1]; ++e) {
-            const std::uint32_t j = entries[e];
-            const double dx = px[i] - px[j], dy = py[i] - py[j];
-            const double r2 = dx * dx + dy * dy;
-            const double w = k.w(r2);
-            const double f = k.gradFactor(r2); // both 0 beyond h
-            const double s = scorr(w);
+    for (long long b = 0; b < blocks; ++b) {
+        const BlockPair pair(b, n);
+        const pbf::Lanes xi = pair.gather(px), yi = pair.gather(py);
+        pbf::Lanes rho = selfWeight, gx = zero, gy = zero, sumSquares = zero, sx = zero, sy = zero;
+        for (std::size_t e = 2 * std::size_t{blockStart[b]}; e < 2 * std::size_t{blockStart[b + 1]}; e += 2) {
+            const std::uint32_t j0 = lanes[e], j1 = lanes[e + 1];
+            const pbf::Lanes dx = xi - pbf::Lanes::gather(px, j0, j1),
+                             dy = yi - pbf::Lanes::gather(py, j0, j1);
+            const pbf::Lanes r2 = dx * dx + dy * dy;
+            const pbf::Lanes w = k.w(r2);
+            const pbf::Lanes f = k.gradFactor(r2); // both 0 beyond h
+            const pbf::Lanes s = k.artificialPressure(w);
+            const pbf::Lanes fx = f * dx, fy = f * dy;
             rho += w;
-            pgx[e] = f * dx;
-            pgy[e] = f * dy;
-            gx += f * dx;
-            gy += f * dy;
+            fx.store(pgx + e);
+            fy.store(pgy + e);
+            gx += fx;
+            gy += fy;
             sx += s * f * dx;
             sy += s * f * dy;
             sumSquares += f * f * r2;
         }
-        const double c = rho * inverseRest - 1.0;
-        constraint[i] = c;
-        lambda[i] = -c / ((gx * gx + gy * gy + sumSquares) * inverseRest * inverseRest + epsilon);
-        sumGx[i] = gx;
-        sumGy[i] = gy;
-        sumSx[i] = sx;
-        sumSy[i] = sy;
+        const pbf::Lanes c = rho * inverseRest - one;
+        pair.scatter(c, constraint);
+        pair.scatter(-c / ((gx * gx + gy * gy + sumSquares) * inverseRest * inverseRest + epsilon), lambda);
+        pair.scatter(gx, sumGx);
+        pair.scatter(gy, sumGy);
+        pair.scatter(sx, sumSx);
+        pair.scatter(sy, sumSy);
     }
     // Serial sums: the same bits for any thread count.
     double sum = 0, largest = 0;
@@ -112,30 +138,36 @@ void PbfModel::computeLambdas(std::size_t iteration) {
 
 // Lines 13–16: Δx_i = (1/ρ₀) Σ_j (λ_i + λ_j + s_corr) ∇W_ij (eq. 14) = (λ_i G_i + Σ_j λ_j ∇W_ij + S_i)/ρ₀,
 // then collision response; the new positions go to a second buffer so every particle sees its
-// neighbours' positions of this iteration.
+// neighbours' positions of this iteration. A padded slot holds ∇W = 0 and adds nothing.
 void PbfModel::applyPositionCorrections() {
     const long long n = loopCount(state_);
+    const long long blocks = blockCount(neighbours_);
     const double *px = px_.data(), *py = py_.data(), *lambda = lambda_.data();
     const double *pgx = pairGradX_.data(), *pgy = pairGradY_.data();
     const double *sumGx = gradSumX_.data(), *sumGy = gradSumY_.data(), *sumSx = scorrSumX_.data(),
                  *sumSy = scorrSumY_.data();
     double *nx = nextX_.data(), *ny = nextY_.data();
-    const std::uint32_t *offsets = neighbours_.offsets(), *entries = neighbours_.entries();
-    const double inverseRest = 1.0 / restDensity_;
+    const std::uint32_t *blockStart = neighbours_.blockStart(), *lanes = neighbours_.laneEntries();
+    const pbf::Lanes inverseRest = pbf::Lanes::all(1.0 / restDensity_);
     const pbf::Box box = confinementBox();
     const pbf::WallJitter jitter = wallJitter();
     const double margin = params_.particleRadius;
 #pragma omp parallel for schedule(static) if (n >= kParallelMinParticles)
-    for (long long i = 0; i < n; ++i) {
-        double sx = lambda[i] * sumGx[i] + sumSx[i], sy = lambda[i] * sumGy[i] + sumSy[i];
-        for (std::uint32_t e = offsets[i]; e < offsets[i + 1]; ++e) {
-            const double l = lambda[entries[e]];
-            sx += l * pgx[e];
-            sy += l * pgy[e];
+    for (long long b = 0; b < blocks; ++b) {
+        const BlockPair pair(b, n);
+        const pbf::Lanes li = pair.gather(lambda);
+        pbf::Lanes sx = li * pair.gather(sumGx) + pair.gather(sumSx);
+        pbf::Lanes sy = li * pair.gather(sumGy) + pair.gather(sumSy);
+        for (std::size_t e = 2 * std::size_t{blockStart[b]}; e < 2 * std::size_t{blockStart[b + 1]}; e += 2) {
+            const pbf::Lanes l = pbf::Lanes::gather(lambda, lanes[e], lanes[e + 1]);
+            sx += l * pbf::Lanes::load(pgx + e);
+            sy += l * pbf::Lanes::load(pgy + e);
         }
-        nx[i] = px[i] + sx * inverseRest;
-        ny[i] = py[i] + sy * inverseRest;
-        pbf::confine(box, obstacles_, margin, jitter, static_cast<std::uint32_t>(i), nx[i], ny[i]);
+        pair.scatter(pair.gather(px) + sx * inverseRest, nx);
+        pair.scatter(pair.gather(py) + sy * inverseRest, ny);
+        pbf::confine(box, obstacles_, margin, jitter, pair.first, nx[pair.first], ny[pair.first]);
+        if (pair.second != pair.first)
+            pbf::confine(box, obstacles_, margin, jitter, pair.second, nx[pair.second], ny[pair.second]);
     }
     px_.swap(nextX_);
     py_.swap(nextY_);
@@ -163,13 +195,15 @@ void PbfModel::applyVorticityConfinement() {
     omega_.resize(state_.size());
     const double *px = px_.data(), *py = py_.data();
     double *vx = state_.vx.data(), *vy = state_.vy.data(), *omega = omega_.data();
-    const std::uint32_t *offsets = neighbours_.offsets(), *entries = neighbours_.entries();
+    const std::uint32_t *blockStart = neighbours_.blockStart(), *lanes = neighbours_.laneEntries(),
+                        *counts = neighbours_.counts();
     const pbf::Kernels k = kernels_;
 #pragma omp parallel for schedule(static) if (n >= kParallelMinParticles)
     for (long long i = 0; i < n; ++i) {
         double w = 0;
-        for (std::uint32_t e = offsets[i]; e < offsets[i + 1]; ++e) {
-            const std::uint32_t j = entries[e];
+        const std::uint32_t* row = lanes + 2 * std::size_t{blockStart[i / 2]} + i % 2;
+        for (std::uint32_t t = 0; t < counts[i]; ++t) {
+            const std::uint32_t j = row[2 * t];
             const double dx = px[i] - px[j], dy = py[i] - py[j];
             const double f = k.gradFactor(dx * dx + dy * dy); // ∇_i W = f (dx, dy); ∇_j W = −∇_i W
             const double ux = vx[j] - vx[i], uy = vy[j] - vy[i];
@@ -182,8 +216,9 @@ void PbfModel::applyVorticityConfinement() {
 #pragma omp parallel for schedule(static) if (n >= kParallelMinParticles)
     for (long long i = 0; i < n; ++i) {
         double ex = 0, ey = 0;
-        for (std::uint32_t e = offsets[i]; e < offsets[i + 1]; ++e) {
-            const std::uint32_t j = entries[e];
+        const std::uint32_t* row = lanes + 2 * std::size_t{blockStart[i / 2]} + i % 2;
+        for (std::uint32_t t = 0; t < counts[i]; ++t) {
+            const std::uint32_t j = row[2 * t];
             const double dx = px[i] - px[j], dy = py[i] - py[j];
             const double f = k.gradFactor(dx * dx + dy * dy) * (std::abs(omega[j]) - std::abs(omega[i]));
             ex += f * dx;
@@ -205,14 +240,16 @@ void PbfModel::applyXsphViscosity() {
     nextVy_.resize(state_.size());
     const double *px = px_.data(), *py = py_.data(), *vx = state_.vx.data(), *vy = state_.vy.data();
     double *ox = nextVx_.data(), *oy = nextVy_.data();
-    const std::uint32_t *offsets = neighbours_.offsets(), *entries = neighbours_.entries();
+    const std::uint32_t *blockStart = neighbours_.blockStart(), *lanes = neighbours_.laneEntries(),
+                        *counts = neighbours_.counts();
     const pbf::Kernels k = kernels_;
     const double c = params_.xsph;
 #pragma omp parallel for schedule(static) if (n >= kParallelMinParticles)
     for (long long i = 0; i < n; ++i) {
         double sx = 0, sy = 0;
-        for (std::uint32_t e = offsets[i]; e < offsets[i + 1]; ++e) {
-            const std::uint32_t j = entries[e];
+        const std::uint32_t* row = lanes + 2 * std::size_t{blockStart[i / 2]} + i % 2;
+        for (std::uint32_t t = 0; t < counts[i]; ++t) {
+            const std::uint32_t j = row[2 * t];
             const double dx = px[i] - px[j], dy = py[i] - py[j];
             const double w = k.w(dx * dx + dy * dy);
             sx += (vx[j] - vx[i]) * w;

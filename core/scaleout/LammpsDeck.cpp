@@ -22,14 +22,15 @@ std::string number(double value) {
 // Refusals first: a deck that would silently run another experiment is worse than none.
 void checkExportable(const MdModel& gas) {
     const MdParams& p = gas.parameters();
-    if (p.integrator != "velocity-verlet")
-        throw ExportError("integrator " + p.integrator +
-                          " has no LAMMPS counterpart: fix nve is velocity Verlet; use --set "
-                          "integrator=velocity-verlet");
+    const std::string& verlet = mdIntegrator(MdIntegrator::VelocityVerlet).name;
+    if (p.integrator != MdIntegrator::VelocityVerlet)
+        throw ExportError(
+            "integrator " + nameOf(p.integrator) +
+            " has no LAMMPS counterpart: fix nve is velocity Verlet; use --set integrator=" + verlet);
     if (p.dt < 0)
         throw ExportError("dt = " + number(p.dt) +
                           " runs time backwards; LAMMPS steps forward only: export with dt > 0");
-    if (p.wallMode == "thermal")
+    if (p.wallMode == MdWallMode::Thermal)
         throw ExportError("thermal walls (wall_mode=thermal) are not exported: Debian's LAMMPS has no "
                           "diffuse wall (fix wall/reflect/stochastic is in the EXTRA-FIX package it lacks), "
                           "and a thermostat would heat the bulk instead of the walls; use --set "
@@ -46,7 +47,7 @@ std::vector<std::string> mappingNotes(const MdParams& p) {
         "exact: positions, velocities, both species' masses and diameters, the harmonic contact "
         "F = k (d_ij - r) as gran/hooke without damping or tangential spring, reflecting walls as fix "
         "wall/reflect, velocity Verlet as fix nve, dt" +
-            std::string(p.gravity != 0 ? ", gravity as fix gravity" : ""),
+            std::string(p.appliedGravity() != 0 ? ", gravity as fix gravity" : ""),
         "potential and total energy: LAMMPS's granular pair styles report no energy; import computes them "
         "from the dumped positions with ParticleLab's formula",
         "not in LAMMPS's output: pressure_wall (fix wall/reflect counts no impulse) and collision_rate; "
@@ -109,7 +110,8 @@ std::string inputScript(const MdModel& gas, int types, const std::vector<std::st
        << "neigh_modify    every 1 delay 0 check yes\n"
        << "fix             integrate all nve\n"
        << "fix             walls all wall/reflect xlo EDGE xhi EDGE ylo EDGE yhi EDGE\n";
-    if (p.gravity != 0) in << "fix             fall all gravity " << Exact{p.gravity} << " vector 0 -1 0\n";
+    if (p.appliedGravity() != 0)
+        in << "fix             fall all gravity " << Exact{p.appliedGravity()} << " vector 0 -1 0\n";
     in << "fix             plane all enforce2d\n"
        << "timestep        " << Exact{p.dt} << "\n"
        << "# kT = kinetic energy per disk, as ParticleLab counts it (2 degrees of freedom, none removed)\n"

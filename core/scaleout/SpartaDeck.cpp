@@ -59,7 +59,7 @@ std::vector<std::string> mappingNotes(const DsmcModel& cell, const VssParameters
           << ", as collide vss with d_ref = " << vss.diameter << " m, omega = " << vss.omega
           << ", T_ref = " << vss.tref << " K, alpha = 1";
     return {
-        "exact: the " + std::to_string(cell.state().size()) + " initial velocities (" + p.initial +
+        "exact: the " + std::to_string(cell.state().size()) + " initial velocities (" + nameOf(p.initial) +
             " start), F_N, the cell volume, dt, NTC with carried remainders (collide_modify remain yes)",
         cross.str(),
         "differs: random numbers (SPARTA's own generator), SPARTA's first (sigma c_r)_max estimate instead "

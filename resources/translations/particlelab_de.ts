@@ -305,10 +305,6 @@ Wirkt nach „Zurücksetzen“.</translation>
         <translation>Schwerkraft x</translation>
     </message>
     <message>
-        <source>Gravity y</source>
-        <translation>Schwerkraft y</translation>
-    </message>
-    <message>
         <source>Grid spacing of spawned fluid in units of h (seed 0.8).</source>
         <translation>Gitterabstand erzeugter Flüssigkeit in Einheiten von h (Original: 0.8).</translation>
     </message>
@@ -729,10 +725,6 @@ Wirkt nach „Zurücksetzen“.</translation>
         <translation>Geschwindigkeitsglättung aus dem Artikel (dort 0.01); 0: aus, wie im Original.</translation>
     </message>
     <message>
-        <source>Vertical component of gravity (seed −9.8).</source>
-        <translation>Senkrechte Komponente der Schwerkraft (Original: −9.8).</translation>
-    </message>
-    <message>
         <source>Viscosity index: 0.5 hard sphere, 1 Maxwell, O2 0.77.</source>
         <translation>Viskositätsexponent: 0.5 harte Kugel, 1 Maxwell, O2 0.77.</translation>
     </message>
@@ -964,56 +956,137 @@ Wirkt nach „Zurücksetzen“.</translation>
         <source>unstable</source>
         <translation>instabil</translation>
     </message>
-</context>
-<context>
-    <name>pl::ui</name>
+    <message>
+        <source>(σ c_r)_max</source>
+        <translation>(σ c_r)_max</translation>
+    </message>
+    <message>
+        <source>(σ c_r)_max [m³/s]</source>
+        <translation>(σ c_r)_max [m³/s]</translation>
+    </message>
+    <message>
+        <source>Dam-break front</source>
+        <translation>Dammbruchfront</translation>
+    </message>
+    <message>
+        <source>Density error</source>
+        <translation>Dichtefehler</translation>
+    </message>
     <message>
         <source>Energy</source>
         <translation>Energie</translation>
     </message>
     <message>
-        <source>energy</source>
-        <translation>Energie</translation>
+        <source>Flow</source>
+        <translation>Strömung</translation>
     </message>
     <message>
-        <source>kinetic</source>
-        <translation>kinetisch</translation>
+        <source>KL divergence [nats]</source>
+        <translation>KL-Divergenz [nats]</translation>
     </message>
     <message>
-        <source>potential</source>
-        <translation>potentiell</translation>
+        <source>KL to Maxwellian</source>
+        <translation>KL zur Maxwell-Verteilung</translation>
     </message>
     <message>
-        <source>total</source>
-        <translation>gesamt</translation>
+        <source>M4</source>
+        <translation>M4</translation>
     </message>
     <message>
-        <source>|E − E₀| / E₀</source>
-        <translation>|E − E₀| / E₀</translation>
+        <source>M4 exact (BKW)</source>
+        <translation>M4 exakt (BKW)</translation>
     </message>
     <message>
-        <source>relative drift</source>
-        <translation>relative Drift</translation>
+        <source>M6</source>
+        <translation>M6</translation>
     </message>
     <message>
-        <source>Thermodynamics</source>
-        <translation>Thermodynamik</translation>
+        <source>M6 exact (BKW)</source>
+        <translation>M6 exakt (BKW)</translation>
     </message>
     <message>
-        <source>pressure</source>
-        <translation>Druck</translation>
+        <source>M8</source>
+        <translation>M8</translation>
     </message>
     <message>
-        <source>P from wall impulses</source>
-        <translation>P aus Wandimpulsen</translation>
+        <source>M8 exact (BKW)</source>
+        <translation>M8 exakt (BKW)</translation>
+    </message>
+    <message>
+        <source>M_2k / M_2k(eq)</source>
+        <translation>M_2k / M_2k(eq)</translation>
+    </message>
+    <message>
+        <source>Moments</source>
+        <translation>Momente</translation>
+    </message>
+    <message>
+        <source>N kT / A</source>
+        <translation>N kT / A</translation>
     </message>
     <message>
         <source>P from the virial</source>
         <translation>P aus dem Virial</translation>
     </message>
     <message>
-        <source>N kT / A</source>
-        <translation>N kT / A</translation>
+        <source>P from wall impulses</source>
+        <translation>P aus Wandimpulsen</translation>
+    </message>
+    <message>
+        <source>T = n t √(g/a)</source>
+        <translation>T = n t √(g/a)</translation>
+    </message>
+    <message>
+        <source>T_x</source>
+        <translation>T_x</translation>
+    </message>
+    <message>
+        <source>T_x − T_⊥ [K]</source>
+        <translation>T_x − T_⊥ [K]</translation>
+    </message>
+    <message>
+        <source>T_⊥</source>
+        <translation>T_⊥</translation>
+    </message>
+    <message>
+        <source>Temperatures</source>
+        <translation>Temperaturen</translation>
+    </message>
+    <message>
+        <source>The gravity switch (key G); off, the disks feel none.</source>
+        <translation>Der Schalter der Schwerkraft (Taste G); aus, spüren die Scheiben keine.</translation>
+    </message>
+    <message>
+        <source>Thermodynamics</source>
+        <translation>Thermodynamik</translation>
+    </message>
+    <message>
+        <source>anisotropy</source>
+        <translation>Anisotropie</translation>
+    </message>
+    <message>
+        <source>candidates ng</source>
+        <translation>Kandidaten ng</translation>
+    </message>
+    <message>
+        <source>collisions nc</source>
+        <translation>Stöße nc</translation>
+    </message>
+    <message>
+        <source>compression ρ/ρ₀ − 1</source>
+        <translation>Kompression ρ/ρ₀ − 1</translation>
+    </message>
+    <message>
+        <source>energy</source>
+        <translation>Energie</translation>
+    </message>
+    <message>
+        <source>front Z = z / a</source>
+        <translation>Front Z = z / a</translation>
+    </message>
+    <message>
+        <source>iterations done in the last step</source>
+        <translation>Iterationen im letzten Schritt</translation>
     </message>
     <message>
         <source>kT</source>
@@ -1028,152 +1101,84 @@ Wirkt nach „Zurücksetzen“.</translation>
         <translation>kT von B</translation>
     </message>
     <message>
-        <source>Temperatures</source>
-        <translation>Temperaturen</translation>
-    </message>
-    <message>
-        <source>temperature [K]</source>
-        <translation>Temperatur [K]</translation>
-    </message>
-    <message>
-        <source>T_x</source>
-        <translation>T_x</translation>
-    </message>
-    <message>
-        <source>T_⊥</source>
-        <translation>T_⊥</translation>
-    </message>
-    <message>
-        <source>T</source>
-        <translation>T</translation>
-    </message>
-    <message>
-        <source>T_x − T_⊥ [K]</source>
-        <translation>T_x − T_⊥ [K]</translation>
-    </message>
-    <message>
-        <source>anisotropy</source>
-        <translation>Anisotropie</translation>
-    </message>
-    <message>
-        <source>Moments</source>
-        <translation>Momente</translation>
-    </message>
-    <message>
-        <source>M_2k / M_2k(eq)</source>
-        <translation>M_2k / M_2k(eq)</translation>
-    </message>
-    <message>
-        <source>M4</source>
-        <translation>M4</translation>
-    </message>
-    <message>
-        <source>M6</source>
-        <translation>M6</translation>
-    </message>
-    <message>
-        <source>M8</source>
-        <translation>M8</translation>
-    </message>
-    <message>
-        <source>M4 exact (BKW)</source>
-        <translation>M4 exakt (BKW)</translation>
-    </message>
-    <message>
-        <source>M6 exact (BKW)</source>
-        <translation>M6 exakt (BKW)</translation>
-    </message>
-    <message>
-        <source>M8 exact (BKW)</source>
-        <translation>M8 exakt (BKW)</translation>
-    </message>
-    <message>
-        <source>KL to Maxwellian</source>
-        <translation>KL zur Maxwell-Verteilung</translation>
-    </message>
-    <message>
-        <source>KL divergence [nats]</source>
-        <translation>KL-Divergenz [nats]</translation>
-    </message>
-    <message>
-        <source>Collisions</source>
-        <translation>Stöße</translation>
-    </message>
-    <message>
-        <source>pairs per step</source>
-        <translation>Paare pro Schritt</translation>
-    </message>
-    <message>
-        <source>candidates ng</source>
-        <translation>Kandidaten ng</translation>
-    </message>
-    <message>
-        <source>collisions nc</source>
-        <translation>Stöße nc</translation>
-    </message>
-    <message>
-        <source>(σ c_r)_max [m³/s]</source>
-        <translation>(σ c_r)_max [m³/s]</translation>
-    </message>
-    <message>
-        <source>(σ c_r)_max</source>
-        <translation>(σ c_r)_max</translation>
-    </message>
-    <message>
-        <source>Density error</source>
-        <translation>Dichtefehler</translation>
-    </message>
-    <message>
-        <source>iterations done in the last step</source>
-        <translation>Iterationen im letzten Schritt</translation>
-    </message>
-    <message>
-        <source>compression ρ/ρ₀ − 1</source>
-        <translation>Kompression ρ/ρ₀ − 1</translation>
-    </message>
-    <message>
-        <source>mean</source>
-        <translation>Mittel</translation>
-    </message>
-    <message>
-        <source>max</source>
-        <translation>Max.</translation>
-    </message>
-    <message>
-        <source>Dam-break front</source>
-        <translation>Dammbruchfront</translation>
-    </message>
-    <message>
-        <source>T = n t √(g/a)</source>
-        <translation>T = n t √(g/a)</translation>
-    </message>
-    <message>
-        <source>front Z = z / a</source>
-        <translation>Front Z = z / a</translation>
-    </message>
-    <message>
-        <source>surge front</source>
-        <translation>Flutfront</translation>
-    </message>
-    <message>
-        <source>shallow-water bound 1 + 2T</source>
-        <translation>Flachwasserschranke 1 + 2T</translation>
-    </message>
-    <message>
-        <source>Flow</source>
-        <translation>Strömung</translation>
+        <source>kinetic</source>
+        <translation>kinetisch</translation>
     </message>
     <message>
         <source>kinetic energy Σ ½ v²</source>
         <translation>kinetische Energie Σ ½ v²</translation>
     </message>
     <message>
-        <source>neighbours within h</source>
-        <translation>Nachbarn innerhalb h</translation>
+        <source>max</source>
+        <translation>Max.</translation>
+    </message>
+    <message>
+        <source>mean</source>
+        <translation>Mittel</translation>
     </message>
     <message>
         <source>min</source>
         <translation>Min.</translation>
+    </message>
+    <message>
+        <source>neighbours within h</source>
+        <translation>Nachbarn innerhalb h</translation>
+    </message>
+    <message>
+        <source>pairs per step</source>
+        <translation>Paare pro Schritt</translation>
+    </message>
+    <message>
+        <source>potential</source>
+        <translation>potentiell</translation>
+    </message>
+    <message>
+        <source>pressure</source>
+        <translation>Druck</translation>
+    </message>
+    <message>
+        <source>relative drift</source>
+        <translation>relative Drift</translation>
+    </message>
+    <message>
+        <source>shallow-water bound 1 + 2T</source>
+        <translation>Flachwasserschranke 1 + 2T</translation>
+    </message>
+    <message>
+        <source>surge front</source>
+        <translation>Flutfront</translation>
+    </message>
+    <message>
+        <source>temperature [K]</source>
+        <translation>Temperatur [K]</translation>
+    </message>
+    <message>
+        <source>total</source>
+        <translation>gesamt</translation>
+    </message>
+    <message>
+        <source>|E − E₀| / E₀</source>
+        <translation>|E − E₀| / E₀</translation>
+    </message>
+    <message>
+        <source>classical Runge–Kutta on (x, v); slowly loses energy</source>
+        <translation>klassisches Runge–Kutta-Verfahren für (x, v); verliert langsam Energie</translation>
+    </message>
+    <message>
+        <source>drift h with v_n, kick h with a(x_n), forces; gains energy every step</source>
+        <translation>Drift h mit v_n, Kick h mit a(x_n), Kräfte; gewinnt mit jedem Schritt Energie</translation>
+    </message>
+    <message>
+        <source>kick h, drift h, forces; symplectic</source>
+        <translation>Kick h, Drift h, Kräfte; symplektisch</translation>
+    </message>
+    <message>
+        <source>kick h/2, drift h, forces, kick h/2; symplectic, time-reversible</source>
+        <translation>Kick h/2, Drift h, Kräfte, Kick h/2; symplektisch, zeitumkehrbar</translation>
+    </message>
+    <message>
+        <source>three Verlet steps of θh, (1−2θ)h, θh; symplectic, time-reversible</source>
+        <translation>drei Verlet-Schritte von θh, (1−2θ)h, θh; symplektisch, zeitumkehrbar</translation>
     </message>
 </context>
 <context>

@@ -40,6 +40,26 @@ private slots:
             QVERIFY(r.out.contains(name));
     }
 
+    // The columns command lists what run writes: its names are the CSV header, in order.
+    void columnsListTheRunsHeader() {
+        QTemporaryDir dir;
+        for (const char* preset : {"gas-seed", "dsmc-seed", "fluid-dam-break"}) {
+            const QString series = dir.filePath(QString(preset) + ".csv");
+            QCOMPARE(cli({"run", preset, "--steps", "2", "--out", series, "--quiet"}).exitCode, 0);
+            const auto r = cli({"columns", preset});
+            QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+            QStringList lines = r.out.split('\n', Qt::SkipEmptyParts);
+            QCOMPARE(lines.takeFirst(), QString("name\tunit\tlabel"));
+            QStringList names;
+            for (const QString& line : lines) names << line.section('\t', 0, 0);
+            QCOMPARE(names.join(','), readLines(series).value(0));
+        }
+        QCOMPARE(cli({"columns", "gas"}).out, cli({"columns", "gas-classroom"}).out);
+        const auto bad = cli({"columns", "no-such-scene"});
+        QCOMPARE(bad.exitCode, 2);
+        QVERIFY2(bad.err.contains("no-such-scene"), qPrintable(bad.err));
+    }
+
     void aSnapshotContinuesTheRunExactly() {
         // 200 steps, a snapshot, 100 more from it: the same disks, to the last bit, as 300 at once.
         QTemporaryDir dir;

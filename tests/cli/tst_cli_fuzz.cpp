@@ -40,13 +40,13 @@ const std::vector<Scene>& scenes() {
          {"count_b", "mass_b", "diameter_b", "dt", "stiffness"}},
         {"dsmc-bkw",
          "dsmc",
-         {"count_1=300"},
-         {"count_1", "fn", "dt", "cell_volume", "cross_section", "initial", "temperature",
-          "velocity_components", "hist_bins", "sigma_cr_max_init"}},
+         {"count_a=300"},
+         {"count_a", "fn", "dt", "cell_volume", "cross_section", "initial", "temperature",
+          "velocity_components", "histogram_bins", "sigma_cr_max_init"}},
         {"dsmc-seed",
          "dsmc",
-         {"count_1=200", "count_2=200"},
-         {"count_2", "drift_1", "drift_2", "mass_amu", "fn", "dt"}},
+         {"count_a=200", "count_b=200"},
+         {"count_b", "drift_a", "drift_b", "mass_amu", "fn", "dt"}},
         {"fluid-dam-break",
          "fluid",
          {},
@@ -165,7 +165,7 @@ private:
         if (chance(0.2)) params += QString(", \"%1\": 1").arg(key); // a duplicate
         QString json =
             QString(R"({"schema": %1, "model": "%2", "seed": %3, "params": {%4}, "obstacles": %5})")
-                .arg(chance(0.9) ? "1" : nasty(), chance(0.9) ? scene.model : "liquid",
+                .arg(chance(0.9) ? "2" : nasty(), chance(0.9) ? scene.model : "liquid",
                      chance(0.9) ? QString::number(pick(1000)) : nasty(), params,
                      chance(0.8) ? "[]"
                                  : R"([{"shape": "disc", "x": 0, "y": 0, "radius": )" + value() + "}]");

@@ -1,15 +1,15 @@
 // The GPU models inside Qt: a Qt OpenGL 4.3 context under X (the in-app path, next to the headless EGL
 // one of tests/gl), the controller's backend choice, and the "Benchmark this machine" dialog.
+#include "BenchmarkDialog.h"
 #include "ExperimentDocument.h"
 #include "MainWindow.h"
 #include "SimulationController.h"
 #include "gl/MachineBenchmark.h"
 #include "gl/MdModelGL.h"
 #include "gl/PbfModelGL.h"
-#include "gpu/BenchmarkDialog.h"
-#include "gpu/QtGlContext.h"
 #include "plots/PlotExport.h"
 #include "viewport/GLViewport.h"
+#include "viewport/QtGlContext.h"
 
 #include <QtTest>
 #include <qcustomplot.h>

@@ -106,11 +106,13 @@ private slots:
         auto* gravity = window.findChild<QAction*>("gravityAction");
         QVERIFY(gravity);
         QVERIFY(window.openPreset("gas-seed"));
-        QVERIFY(!gravity->isVisible()); // the gas has a gravity strength, not a switch
+        QVERIFY(gravity->isVisible() && gravity->isChecked()); // every scene with gravity has the switch
+        QVERIFY(window.openPreset("dsmc-seed"));
+        QVERIFY(!gravity->isVisible()); // a DSMC cell has no gravity
         QVERIFY(window.openPreset("fluid-dam-break"));
         QVERIFY(gravity->isVisible() && gravity->isChecked());
         gravity->trigger();
-        QCOMPARE(std::get<bool>(window.controller()->model()->params().at("gravity")), false);
+        QCOMPARE(std::get<bool>(window.controller()->model()->params().at("gravity_on")), false);
         QVERIFY(window.isWindowModified());
         // Without gravity the column does not fall: its mean vertical velocity stays ≥ 0 (it only relaxes
         // at its free surface), where with gravity it is −1.7 L/s after these 20 steps.
@@ -119,7 +121,7 @@ private slots:
         double vy = 0;
         for (double v : fluid->state().vy) vy += v / static_cast<double>(fluid->particleCount());
         QVERIFY2(vy > -0.01, qPrintable(QString::number(vy)));
-        window.controller()->setParameters({{"gravity", true}});
+        window.controller()->setParameters({{"gravity_on", true}});
         QVERIFY(gravity->isChecked());
     }
 

@@ -117,7 +117,8 @@ private slots:
         QVERIFY(choice->error <= 1e-5);
         page->recommendBar()->apply();
         const auto* gas = dynamic_cast<const pl::MdModel*>(controller.model());
-        QCOMPARE(gas->parameters().integrator, std::get<std::string>(choice->setting.at("integrator")));
+        QCOMPARE(nameOf(gas->parameters().integrator),
+                 std::get<std::string>(choice->setting.at("integrator")));
         QCOMPARE(gas->parameters().dt, std::get<double>(choice->setting.at("dt")));
         save(lab, "methods-lab-sweep-gas.png", 1);
     }

@@ -266,7 +266,8 @@ private slots:
         QCOMPARE(window.viewportCore()->tool(), ui::ViewportTool::Spawn);
         auto* gravity = presentChild<QPushButton>(window, "lessonGravitySwitch");
         QTest::mouseClick(gravity, Qt::LeftButton);
-        QCOMPARE(std::get<bool>(window.controller()->model()->params().at("gravity")), gravity->isChecked());
+        QCOMPARE(std::get<bool>(window.controller()->model()->params().at("gravity_on")),
+                 gravity->isChecked());
         window.presentMode()->setActive(false);
         window.document()->setModified(false);
     }

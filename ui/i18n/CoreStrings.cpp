@@ -3,7 +3,8 @@
 #include "CoreStrings.h"
 
 #include "catalog/ModelCatalog.h"
-#include "methods/CellOutcome.h"
+#include "common/sweep/CellOutcome.h"
+#include "md/MdIntegratorTable.h"
 
 #include <algorithm>
 #include <cctype>
@@ -55,13 +56,22 @@ std::vector<std::string> coreDisplayStrings() {
     const auto add = [&texts](const std::string& text) {
         if (!text.empty()) texts.insert(text);
     };
-    for (const ModelInfo& info : modelCatalog()) {
+    for (const ModelDescriptor& info : modelCatalog()) {
         add(info.title);
         for (const ParamSpec& spec : *info.specs) {
             add(spec.label);
             add(spec.unit); // mostly symbols that stay as they are, but some are words ("steps")
             add(spec.group);
             add(spec.tooltip);
+        }
+        // The series docks' titles, axes and legends.
+        for (const PlotSpec& plot : info.plots) {
+            add(plot.title);
+            for (const PlotPanel* panel : {&plot.upper, &plot.lower}) {
+                add(panel->yLabel);
+                add(panel->xLabel);
+                for (const PlotCurve& curve : panel->curves) add(curve.label);
+            }
         }
     }
     // The methods lab's legend of how each cell of a sweep ended.
@@ -70,6 +80,8 @@ std::vector<std::string> coreDisplayStrings() {
          {CellOutcome::Stable, CellOutcome::Inaccurate, CellOutcome::Unstable, CellOutcome::OverCompressed,
           CellOutcome::Exploded, CellOutcome::Rejected})
         add(methods::outcomeName(outcome));
+    // The gas's integrators, described in the methods lab's integrator choice.
+    for (const MdIntegratorInfo& scheme : mdIntegrators()) add(scheme.description);
     // Scene legends and histogram names are made by the models at run time: every built-in preset's
     // freshly reset model shows them.
     for (const BuiltinPreset& builtin : builtinPresets()) {

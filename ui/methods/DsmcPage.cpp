@@ -1,3 +1,4 @@
+// The DSMC accuracy-against-cost page: runs the BKW sweep per particle count and plots error against time.
 #include "DsmcPage.h"
 
 #include "LabPlots.h"
@@ -79,7 +80,7 @@ std::vector<methods::Candidate> DsmcPage::candidates() const {
         methods::Candidate candidate;
         candidate.label =
             std::to_string(c.particles) + " particles, ν dt = " + QString::number(c.nuDt).toStdString();
-        candidate.setting = {{"count_1", static_cast<double>(c.particles)}, {"nu_dt", c.nuDt}};
+        candidate.setting = {{"count_a", static_cast<double>(c.particles)}, {"nu_dt", c.nuDt}};
         candidate.error = c.momentError;
         candidate.cost = c.seconds;
         list.push_back(candidate);
@@ -90,10 +91,10 @@ std::vector<methods::Candidate> DsmcPage::candidates() const {
 QString DsmcPage::whyNotApplicable() const {
     const auto* cell = dynamic_cast<const DsmcModel*>(currentModel("dsmc"));
     if (!cell) return tr("load a DSMC experiment to apply");
-    if (cell->parameters().crossSection != "maxwell")
+    if (cell->parameters().crossSection != DsmcCrossSection::Maxwell)
         return tr("measured for Maxwell molecules: the current cell uses %1")
-            .arg(QString::fromStdString(cell->parameters().crossSection));
-    if (cell->parameters().initial == "two-beams")
+            .arg(QString::fromStdString(nameOf(cell->parameters().crossSection)));
+    if (cell->parameters().initial == DsmcInitialState::TwoBeams)
         return tr("the sweep counts one population of particles; the current cell has two beams");
     return {};
 }
@@ -102,10 +103,10 @@ QString DsmcPage::applyCandidate(const methods::Candidate& c) {
     const auto* cell = dynamic_cast<const DsmcModel*>(currentModel("dsmc"));
     if (!cell || !controller_) return tr("no DSMC experiment is open");
     // Same number density with N particles: F_N = n V / N; the step from ν dt at this density.
-    const double particles = std::get<double>(c.setting.at("count_1"));
+    const double particles = std::get<double>(c.setting.at("count_a"));
     const double density = cell->numberDensity();
     const double nu = density * cell->collisionModel().prefactor;
-    return controller_->setParameters({{"count_1", particles},
+    return controller_->setParameters({{"count_a", particles},
                                        {"fn", density * cell->parameters().cellVolume / particles},
                                        {"dt", std::get<double>(c.setting.at("nu_dt")) / nu}});
 }

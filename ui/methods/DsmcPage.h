@@ -4,8 +4,8 @@
 #pragma once
 
 #include "LabPage.h"
+#include "common/sweep/Recommend.h"
 #include "dsmc/DsmcSweep.h"
-#include "methods/Recommend.h"
 
 class QCustomPlot;
 

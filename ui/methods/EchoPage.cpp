@@ -1,3 +1,4 @@
+// The time-reversal page: runs the Loschmidt echo in each arithmetic and plots the return error.
 #include "EchoPage.h"
 
 #include "LabPlots.h"

@@ -1,3 +1,4 @@
+// The fluid page: runs the dt × iterations sweep, draws its stability map and the error-against-cost plot.
 #include "FluidPage.h"
 
 #include "LabPlots.h"

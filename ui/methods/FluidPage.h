@@ -4,7 +4,7 @@
 #pragma once
 
 #include "LabPage.h"
-#include "methods/Recommend.h"
+#include "common/sweep/Recommend.h"
 #include "pbf/FluidSweep.h"
 
 class QComboBox;

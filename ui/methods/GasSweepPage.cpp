@@ -1,3 +1,4 @@
+// The gas integrators page: runs the accuracy sweep per scheme and plots error against cost with fits.
 #include "GasSweepPage.h"
 
 #include "LabPlots.h"
@@ -14,8 +15,7 @@
 namespace pl::ui {
 
 namespace {
-const std::vector<std::string> kSchemes{"explicit-euler", "symplectic-euler", "velocity-verlet", "rk4",
-                                        "forest-ruth"};
+const std::vector<std::string> kSchemes = mdIntegratorNamesByOrder();
 // From the gas: the horizon is 64 of its steps, swept at 8 … 128 steps, the reference at 1024.
 constexpr double kHorizonSteps = 64;
 const std::vector<int> kGasSteps{8, 16, 32, 64, 128};
@@ -91,7 +91,7 @@ void GasSweepPage::run() {
         }
         // The gas runs on in this thread: the worker gets its state as it is now.
         *reference = md::captureGas(*gas);
-        currentIntegrator_ = gas->parameters().integrator;
+        currentIntegrator_ = nameOf(gas->parameters().integrator);
         currentDt_ = gas->parameters().dt;
     }
     ranSource_ = source;

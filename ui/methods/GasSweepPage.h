@@ -5,8 +5,8 @@
 #pragma once
 
 #include "LabPage.h"
+#include "common/sweep/Recommend.h"
 #include "md/MethodSweep.h"
-#include "methods/Recommend.h"
 
 class QComboBox;
 class QCustomPlot;

@@ -1,3 +1,4 @@
+// Headless methods lab: runs one page to completion and saves its plot and data (particlelab --lab).
 #include "LabBatch.h"
 
 #include "DsmcPage.h"

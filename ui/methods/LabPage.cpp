@@ -1,3 +1,4 @@
+// The frame every methods-lab tab shares: the note, the content area and the current experiment.
 #include "LabPage.h"
 
 #include "LabRunner.h"

@@ -1,3 +1,4 @@
+// The methods lab's plot helpers: log axes, styled scheme curves, outcome-coloured map cells, markers.
 #include "LabPlots.h"
 #include "i18n/Translations.h"
 

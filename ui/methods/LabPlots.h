@@ -2,7 +2,7 @@
 // coloured by outcome, and a marker for the experiment's current setting.
 #pragma once
 
-#include "methods/CellOutcome.h"
+#include "common/sweep/CellOutcome.h"
 
 #include <QColor>
 #include <QString>

@@ -1,3 +1,4 @@
+// The methods lab's worker thread: runs queued jobs with progress and Cancel, results back on the GUI.
 #include "LabRunner.h"
 
 #include <QCoreApplication>

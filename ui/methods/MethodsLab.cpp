@@ -1,3 +1,4 @@
+// The methods lab window: builds its pages around one shared runner, with entry points for tests.
 #include "MethodsLab.h"
 
 #include "DsmcPage.h"

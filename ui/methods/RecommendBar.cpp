@@ -1,3 +1,4 @@
+// The Recommend bar: reads the error target, picks the cheapest passing setting and applies it.
 #include "RecommendBar.h"
 
 #include "panels/ScientificSpinBox.h"

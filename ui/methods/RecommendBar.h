@@ -1,8 +1,8 @@
 // "Recommend": the user types an error target; the bar picks the cheapest measured setting that meets it
-// (methods/Recommend.h) and offers to apply it to the experiment, when the experiment is one it fits.
+// (common/sweep/Recommend.h) and offers to apply it to the experiment, when the experiment is one it fits.
 #pragma once
 
-#include "methods/Recommend.h"
+#include "common/sweep/Recommend.h"
 
 #include <QWidget>
 #include <functional>

@@ -1,3 +1,4 @@
+// The MD-against-DSMC page: relaxes the same two beams in both models and plots kurtosis and wall time.
 #include "RelaxPage.h"
 
 #include "LabPlots.h"

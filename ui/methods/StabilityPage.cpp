@@ -1,9 +1,11 @@
+// The gas stability-map page: runs the dt × stiffness map, draws its cells, the limit line and the gas.
 #include "StabilityPage.h"
 
 #include "LabPlots.h"
 #include "LabRunner.h"
+#include "common/sweep/SweepGrid.h"
+#include "i18n/Translations.h"
 #include "md/MdModel.h"
-#include "methods/SweepGrid.h"
 
 #include <QComboBox>
 #include <QLabel>
@@ -30,7 +32,10 @@ StabilityPage::StabilityPage(LabRunner* runner, SimulationController* controller
       stiffness_(methods::logSpaced(std::pow(10.0, 1.5), std::pow(10.0, 5.5), 9)),
       dts_(methods::logSpaced(6e-5, 0.6, 26)) {
     integrator_ = new QComboBox(this);
-    integrator_->addItems({"velocity-verlet", "symplectic-euler", "explicit-euler", "rk4", "forest-ruth"});
+    for (const MdIntegratorInfo& scheme : mdIntegrators()) {
+        integrator_->addItem(QString::fromStdString(scheme.name));
+        integrator_->setItemData(integrator_->count() - 1, coreText(scheme.description), Qt::ToolTipRole);
+    }
     controls_->addWidget(new QLabel(tr("Integrator:"), this));
     controls_->addWidget(integrator_);
     controls_->addStretch(1);
@@ -52,7 +57,7 @@ void StabilityPage::setGrid(std::vector<double> stiffness, std::vector<double> d
 void StabilityPage::drawFrame(const std::string& integrator) {
     plot_->clearGraphs();
     lab::addOutcomeGraphs(plot_, kClasses);
-    const double limit = stabilityLimit(integratorFromName(integrator));
+    const double limit = mdIntegrator(integrator).stabilityLimit;
     if (limit > 0) {
         QCPGraph* line = plot_->addGraph();
         line->setName(tr("linear limit ω dt = %1").arg(limit, 0, 'g', 4));

@@ -3,6 +3,7 @@
 #include "DistributionPlot.h"
 #include "i18n/Translations.h"
 
+#include "LiveReplot.h"
 #include "PlotExport.h"
 #include "PlotStyle.h"
 #include "ReadablePlot.h"
@@ -129,7 +130,7 @@ void DistributionPlot::redraw() {
     if (right > 0) plot_->xAxis->setRangeUpper(right);
     plot_->yAxis->setRange(0, top > 0 ? 1.15 * top : 1.0);
     title_->setText(summaries.join("\n"));
-    plot_->replot(QCustomPlot::rpQueuedReplot);
+    replotLive(plot_);
 }
 
 void DistributionPlot::showEvent(QShowEvent* event) {

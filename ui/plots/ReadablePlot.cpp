@@ -3,8 +3,11 @@
 // width, so that settles at once.
 #include "ReadablePlot.h"
 
+#include "FrameProfile.h"
+
 #include <QFontMetricsF>
 #include <algorithm>
+#include <memory>
 #include <qcustomplot.h>
 
 namespace pl::ui {
@@ -125,6 +128,13 @@ void placeLegendRow(QCustomPlot* plot, QCPLegend* legend, int row) {
 }
 
 void keepDataReadable(QCustomPlot* plot) {
+    // The replot's wall time for the frame profile (--measure-fps), from before its layout to its end.
+    const auto replotClock = std::make_shared<QElapsedTimer>();
+    QObject::connect(plot, &QCustomPlot::beforeReplot, plot, [replotClock] { replotClock->start(); });
+    QObject::connect(plot, &QCustomPlot::afterReplot, plot, [replotClock] {
+        if (replotClock->isValid() && FrameProfile::instance().enabled())
+            FrameProfile::instance().add(FramePart::Replot, replotClock->nsecsElapsed());
+    });
     QObject::connect(plot, &QCustomPlot::afterLayout, plot, [plot] {
         bool again = false;
         QCPLayoutGrid* layout = plot->plotLayout();

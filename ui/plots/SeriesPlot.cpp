@@ -1,6 +1,8 @@
-// SeriesPlot: graphs bound to store columns by name when a model is loaded; one replot per new row.
+// SeriesPlot: graphs bound to store columns by name when a model is loaded; new rows reach the graphs at
+// once, the drawing follows at the live replot rate (LiveReplot.h).
 #include "SeriesPlot.h"
 
+#include "LiveReplot.h"
 #include "PlotExport.h"
 #include "PlotStyle.h"
 #include "ReadablePlot.h"
@@ -216,7 +218,7 @@ void SeriesPlot::refresh() {
             y->setRange(range.lower - pad, range.upper + pad);
         }
     }
-    plot_->replot(QCustomPlot::rpQueuedReplot);
+    replotLive(plot_);
 }
 
 bool SeriesPlot::hasProfiles() const {

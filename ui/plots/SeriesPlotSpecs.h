@@ -1,5 +1,5 @@
-// The time-series docks of every scene: which columns each plots, with which labels and colours.
-// A new scene adds its entries here; the main window makes one dock per entry.
+// The time-series docks of every scene, made from the plot specs of the model registrations
+// (core/catalog/ModelDescriptor.h); the main window makes one dock per entry.
 #pragma once
 
 #include "SeriesPlot.h"
@@ -9,5 +9,8 @@
 namespace pl::ui {
 
 const std::vector<SeriesPlotSpec>& seriesPlotSpecs();
+
+// The kinds whose registration lists the distribution dock of this object name ("speedHistogram", …).
+QStringList distributionKinds(const QString& distribution);
 
 } // namespace pl::ui

@@ -168,8 +168,8 @@ void LessonControls::addGasControls() {
     const double kT = latest(controller_, "kT", 0.5);
     const double mass = number(values, "mass_a", 1.0);
     const double height = number(values, "box_height", 1.0);
-    addGravitySlider(addGroup(3, 0), "gravity",
-                     std::max(kGravityScale * kT / (mass * height), 2 * number(values, "gravity", 0)), 1.0);
+    addGravitySlider(addGroup(3, 0),
+                     std::max(kGravityScale * kT / (mass * height), 2 * number(values, "gravity", 0)));
 }
 
 void LessonControls::addPistonGroup(QVBoxLayout* drive, QVBoxLayout* toggle) {
@@ -192,27 +192,24 @@ void LessonControls::addPistonGroup(QVBoxLayout* drive, QVBoxLayout* toggle) {
         pistonButtons_[i] = addButton(row, texts[i], names[i]);
         pistonButtons_[i]->setCheckable(true);
         connect(pistonButtons_[i], &QPushButton::clicked, this, [this, direction = i - 1] {
-            Model* model = controller_->model();
-            if (!model || !model->tools() || !model->tools()->hasPiston()) return;
-            model->tools()->drivePiston(direction);
-            controller_->noteEdited();
+            if (!controller_->drivePiston(direction)) return;
             syncState();
         });
     }
 }
 
-void LessonControls::addGravitySlider(QVBoxLayout* group, const QString& key, double maximum, double sign) {
+void LessonControls::addGravitySlider(QVBoxLayout* group, double maximum) {
     QLabel* value = nullptr;
     QSlider* slider = addSlider(group, tr("Gravity"), &value);
     slider->setObjectName("lessonGravity");
     slider->setRange(0, kSliderSteps);
-    const double now = std::abs(number(controller_->model()->params(), key.toStdString(), 0));
+    const double now = std::abs(number(controller_->model()->params(), "gravity", 0));
     slider->setValue(static_cast<int>(std::lround(kSliderSteps * std::min(1.0, now / maximum))));
     value->setText(QString::number(now, 'g', 3));
-    connect(slider, &QSlider::valueChanged, this, [this, key, maximum, sign, value](int v) {
+    connect(slider, &QSlider::valueChanged, this, [this, maximum, value](int v) {
         const double g = maximum * v / kSliderSteps;
         value->setText(QString::number(g, 'g', 3));
-        const QString problem = controller_->setParameters({{key.toStdString(), sign * g}});
+        const QString problem = controller_->setParameters({{"gravity", g}});
         if (!problem.isEmpty()) say(problem);
     });
 }
@@ -222,9 +219,9 @@ void LessonControls::addFluidControls() {
     addGroup(1, 0)->addLayout(switches);
     QPushButton* gravity = addButton(switches, tr("Gravity on"), "lessonGravitySwitch");
     gravity->setCheckable(true);
-    gravity->setChecked(std::get<bool>(controller_->model()->params().at("gravity")));
+    gravity->setChecked(std::get<bool>(controller_->model()->params().at("gravity_on")));
     connect(gravity, &QPushButton::toggled, this, [this](bool on) {
-        const QString problem = controller_->setParameters({{"gravity", on}});
+        const QString problem = controller_->setParameters({{"gravity_on", on}});
         if (!problem.isEmpty()) say(problem);
     });
     // Pour: held, it drops small blocks of fluid into the middle of the tank, as a tap would.
@@ -236,7 +233,7 @@ void LessonControls::addFluidControls() {
         pour_->start();
     });
     connect(pour, &QPushButton::released, pour_, &QTimer::stop);
-    addGravitySlider(addGroup(2, 0), "gravity_y", 2 * kFluidGravity, -1.0);
+    addGravitySlider(addGroup(2, 0), 2 * kFluidGravity);
     auto* mouseRow = new QHBoxLayout;
     QVBoxLayout* mouseGroup = addGroup(2, 1);
     mouseGroup->addStretch(1);
@@ -287,13 +284,11 @@ void LessonControls::applyParticleCount(int total) {
 
 void LessonControls::pourOnce() {
     Model* model = controller_->model();
-    if (!model || !model->tools()) return;
+    if (!model || !controller_->tools()) return;
     const SceneView view = model->sceneView();
     const double side = kPourFraction * (view.right - view.left);
     const double x = 0.5 * (view.left + view.right), y = view.top - side;
-    say(QString::fromStdString(
-        model->tools()->spawnInRectangle(x - 0.5 * side, y - side, x + 0.5 * side, y)));
-    controller_->noteEdited();
+    say(controller_->spawnInRectangle(x - 0.5 * side, y - side, x + 0.5 * side, y));
 }
 
 void LessonControls::syncState() {

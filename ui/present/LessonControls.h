@@ -36,7 +36,8 @@ private:
     void addFluidControls();
     void addDsmcControls();
     void addPistonGroup(QVBoxLayout* drive, QVBoxLayout* toggle);
-    void addGravitySlider(QVBoxLayout* group, const QString& key, double maximum, double sign);
+    // The downward acceleration "gravity", the same key in every scene, from 0 to maximum [L/T²].
+    void addGravitySlider(QVBoxLayout* group, double maximum);
     QSlider* addSlider(QVBoxLayout* group, const QString& title, QLabel** valueLabel);
     QPushButton* addButton(QLayout* row, const QString& text, const QString& objectName);
     void applyParticleCount(int total);

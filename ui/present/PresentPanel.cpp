@@ -69,9 +69,9 @@ void PresentPanel::fillChooser() {
     const QString kind = model ? QString::fromStdString(model->kind()) : QString();
     const QSignalBlocker block(chooser_);
     chooser_->clear();
-    if (kind == QLatin1String("gas") || kind == QLatin1String("dsmc"))
+    if (distributionKinds(QStringLiteral("speedHistogram")).contains(kind))
         chooser_->addItem(tr("Speed distribution"), QStringLiteral("speedHistogram"));
-    if (kind == QLatin1String("dsmc"))
+    if (distributionKinds(QStringLiteral("vxHistogram")).contains(kind))
         chooser_->addItem(tr("v_x distribution"), QStringLiteral("vxHistogram"));
     for (const SeriesPlotSpec& spec : seriesPlotSpecs())
         if (spec.kinds.contains(kind)) chooser_->addItem(spec.title, spec.objectName);

@@ -2,11 +2,14 @@
 // shaders need 4.3, the viewport does not.
 #include "GLViewport.h"
 
+#include "FrameProfile.h"
 #include "Palette.h"
 #include "SimulationController.h"
 #include "ViewportCore.h"
 
 #include <QPainter>
+#include <cstring>
+#include <omp.h>
 
 namespace pl::ui {
 
@@ -128,6 +131,9 @@ void GLViewport::initializeGL() {
         qWarning("GLViewport: cannot build the particle shader: %s", qPrintable(program_.log()));
         return;
     }
+    const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+    softwareRasteriser_ =
+        renderer && (std::strstr(renderer, "llvmpipe") || std::strstr(renderer, "softpipe"));
     vao_.create();
     instances_.create();
     instances_.setUsagePattern(QOpenGLBuffer::StreamDraw);
@@ -217,6 +223,18 @@ void GLViewport::drawParticles() {
 }
 
 void GLViewport::paintGL() {
+    // A software rasteriser (Mesa llvmpipe) draws this frame on the CPU cores that the model's OpenMP
+    // workers keep spinning on, waiting for the next step (libgomp spins for milliseconds before it
+    // sleeps): let them go, so the frame gets the cores. The next step starts them again (tens of µs).
+    if (softwareRasteriser_) omp_pause_resource_all(omp_pause_soft);
+    {
+        const FramePartTimer timer(FramePart::Viewport);
+        paintFrame();
+    }
+    FrameProfile::instance().frameShown();
+}
+
+void GLViewport::paintFrame() {
     core_->beginPaint();
     // A GPU model handing over its buffers made its own context current (to finish its steps): take
     // ours back, with this widget's framebuffer bound.

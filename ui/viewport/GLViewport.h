@@ -34,6 +34,7 @@ protected:
 private:
     void contextGoingAway(); // the dock was floated or the widget re-parented: a new context follows
     void releaseGL();
+    void paintFrame();
     void drawParticles();
     void drawGpuParticles(const GpuParticles& particles);
     void setCommonUniforms(QOpenGLShaderProgram& program, const SceneView& scene);
@@ -46,6 +47,7 @@ private:
     std::vector<float> packed_; // x, y, radius, value per particle
     bool ready_ = false;
     bool gpuReady_ = false;
+    bool softwareRasteriser_ = false; // the GL renderer runs on the CPU cores (llvmpipe)
     long long gpuFrames_ = 0;
 };
 

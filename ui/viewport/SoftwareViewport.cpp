@@ -1,6 +1,7 @@
 // SoftwareViewport: background, particles, overlay, in that order.
 #include "SoftwareViewport.h"
 
+#include "FrameProfile.h"
 #include "SimulationController.h"
 #include "ViewportCore.h"
 
@@ -17,6 +18,7 @@ SoftwareViewport::SoftwareViewport(SimulationController* controller, QWidget* pa
 }
 
 void SoftwareViewport::paintEvent(QPaintEvent*) {
+    const FramePartTimer timer(FramePart::Viewport);
     core_->beginPaint();
     QPainter painter(this);
     const auto& bg = core_->scene().background;
@@ -25,6 +27,8 @@ void SoftwareViewport::paintEvent(QPaintEvent*) {
     core_->paintParticles(painter);
     core_->paintOverlay(painter);
     core_->endPaint();
+    painter.end();
+    FrameProfile::instance().frameShown();
 }
 
 } // namespace pl::ui

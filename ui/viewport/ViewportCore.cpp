@@ -90,14 +90,8 @@ void ViewportCore::updateCursor() {
     }
 }
 
-void ViewportCore::edited() {
-    controller_->noteEdited();
-    widget_->update();
-}
-
 std::optional<std::size_t> ViewportCore::obstacleAt(QPointF world) const {
-    Model* model = controller_->model();
-    SceneTools* tools = model ? model->tools() : nullptr;
+    const SceneTools* tools = controller_->tools();
     if (!tools) return std::nullopt;
     const auto& obstacles = tools->obstacles();
     for (std::size_t i = obstacles.size(); i-- > 0;) // the topmost (last drawn) first
@@ -135,7 +129,7 @@ bool ViewportCore::eventFilter(QObject* watched, QEvent* event) {
 
 void ViewportCore::press(QMouseEvent* event) {
     pressPx_ = currentPx_ = event->position();
-    SceneTools* tools = controller_->model() ? controller_->model()->tools() : nullptr;
+    const SceneTools* tools = controller_->tools();
     if (event->button() == Qt::MiddleButton || (event->button() == Qt::LeftButton && !tools)) {
         gesture_ = Gesture::Pan;
         return;
@@ -173,15 +167,15 @@ void ViewportCore::press(QMouseEvent* event) {
         disc.radius = kNewObstacleFraction * std::min(scene_.right - scene_.left, scene_.top - scene_.bottom);
         disc.x = world.x();
         disc.y = world.y();
-        tools->addObstacle(disc);
-        edited();
+        controller_->addObstacle(disc);
+        widget_->update();
         break;
     }
     case ViewportTool::Remove:
         if (const auto hit = obstacleAt(world)) {
-            tools->removeObstacle(*hit);
+            controller_->removeObstacle(*hit);
             hovered_.reset();
-            edited();
+            widget_->update();
         }
         break;
     }
@@ -192,7 +186,6 @@ void ViewportCore::move(QMouseEvent* event) {
     const QPointF previous = currentPx_;
     currentPx_ = event->position();
     const QPointF world = transform_.toWorld(currentPx_);
-    SceneTools* tools = controller_->model() ? controller_->model()->tools() : nullptr;
     switch (gesture_) {
     case Gesture::None: {
         const auto hit = obstacleAt(world);
@@ -220,36 +213,25 @@ void ViewportCore::move(QMouseEvent* event) {
 }
 
 void ViewportCore::steerObstacle(QPointF target) {
-    SceneTools* tools = controller_->model() ? controller_->model()->tools() : nullptr;
-    if (!tools || grabbed_ >= tools->obstacles().size()) return;
-    if (controller_->isRunning()) {
-        tools->dragObstacle(grabbed_, target.x(), target.y());
-        steeredTo_ = target;
-    } else {
-        tools->placeObstacle(grabbed_, target.x(), target.y());
+    if (!controller_->steerObstacle(grabbed_, target.x(), target.y())) return;
+    if (controller_->isRunning())
+        steeredTo_ = target; // drawn until the body arrives
+    else
         steeredTo_.reset();
-    }
-    controller_->noteEdited();
 }
 
 void ViewportCore::steerPiston(double x) {
-    SceneTools* tools = controller_->model() ? controller_->model()->tools() : nullptr;
-    if (!tools || !tools->hasPiston()) return;
-    if (controller_->isRunning())
-        tools->dragPiston(x);
-    else
-        tools->placePiston(x);
-    controller_->noteEdited();
+    controller_->steerPiston(x);
 }
 
 void ViewportCore::release(QMouseEvent* event) {
     currentPx_ = event->position();
-    SceneTools* tools = controller_->model() ? controller_->model()->tools() : nullptr;
+    const SceneTools* tools = controller_->tools();
     const Gesture finished = gesture_;
     gesture_ = Gesture::None;
     if (finished == Gesture::DragObstacle && tools && grabbed_ < tools->obstacles().size()) {
         steerObstacle(transform_.toWorld(currentPx_) + grabOffset_);
-        tools->releaseObstacle(grabbed_); // let go: it coasts to the last target and stops there
+        controller_->releaseObstacle(grabbed_); // let go: it coasts to the last target and stops there
     }
     if (finished == Gesture::DragPiston) steerPiston(transform_.toWorld(currentPx_).x());
     if ((finished == Gesture::Rectangle || finished == Gesture::Pour) && tools) {
@@ -257,7 +239,7 @@ void ViewportCore::release(QMouseEvent* event) {
         const bool click = distance(pressPx_, currentPx_) < kClickPx;
         if (tool_ == ViewportTool::Spawn || finished == Gesture::Pour) {
             if (click) b = a;
-            emit statusMessage(QString::fromStdString(tools->spawnInRectangle(a.x(), a.y(), b.x(), b.y())));
+            emit statusMessage(controller_->spawnInRectangle(a.x(), a.y(), b.x(), b.y()));
         } else {
             Obstacle box;
             box.shape = Obstacle::Shape::Box;
@@ -267,9 +249,9 @@ void ViewportCore::release(QMouseEvent* event) {
             box.y = click ? a.y() : 0.5 * (a.y() + b.y());
             box.halfWidth = click ? half : 0.5 * std::abs(a.x() - b.x());
             box.halfHeight = click ? half : 0.5 * std::abs(a.y() - b.y());
-            tools->addObstacle(box);
+            controller_->addObstacle(box);
         }
-        edited();
+        widget_->update();
     }
     updateCursor();
     widget_->update();
@@ -390,7 +372,7 @@ void ViewportCore::paintOverlay(QPainter& painter) const {
 
 void ViewportCore::paintSteeredTarget(QPainter& painter) const {
     // Where a dragged obstacle is heading: it follows the hand at the tool speed, so it may lag behind.
-    SceneTools* tools = controller_->model() ? controller_->model()->tools() : nullptr;
+    const SceneTools* tools = controller_->tools();
     if (!steeredTo_ || !tools || !tools->bodiesMoving() || grabbed_ >= scene_.obstacles.size()) return;
     const Obstacle& o = scene_.obstacles[grabbed_];
     painter.save();

@@ -54,8 +54,8 @@ private:
     void press(QMouseEvent* event);
     void move(QMouseEvent* event);
     void release(QMouseEvent* event);
-    // Hands the target to the model: running, it moves the body there at its tool speed; paused, the
-    // body is placed at once.
+    // Hands the target to the controller: running, the model moves the body there at its tool speed;
+    // paused, the body is placed at once.
     void steerObstacle(QPointF target);
     void steerPiston(double x);
     std::optional<std::size_t> obstacleAt(QPointF world) const;
@@ -63,7 +63,6 @@ private:
     void paintLegend(QPainter& painter) const;
     void paintSteeredTarget(QPainter& painter) const;
     void updateCursor();
-    void edited();
 
     SimulationController* controller_;
     QWidget* widget_;

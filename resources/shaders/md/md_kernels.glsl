@@ -10,7 +10,7 @@ struct PairResult {
     float virial;    // r_ij · f_ij = k (d − r) r [energy]
 };
 
-// Harmonic repulsion (physics.md §1): f_ij = k (d − r) r̂_ij for r < d, zero beyond.
+// Harmonic repulsion (docs/gas.md#pair-force): f_ij = k (d − r) r̂_ij for r < d, zero beyond.
 bool harmonicPair(vec2 d, float contactDiameter, float stiffness, out PairResult result) {
     const float r2 = dot(d, d);
     if (r2 >= contactDiameter * contactDiameter || r2 < kCoincidentR2) return false;

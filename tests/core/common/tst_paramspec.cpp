@@ -35,6 +35,15 @@ std::vector<ParamField<Sample>> sampleFields() {
     return {bindReal(&Sample::speed, speed), bindInteger(&Sample::count, count),
             bindText(&Sample::mode, mode)};
 }
+enum class Shade { Light, Dark };
+const ChoiceTable<Shade>& choiceTable(Shade) {
+    static const ChoiceTable<Shade> table{{Shade::Light, "light"}, {Shade::Dark, "dark"}};
+    return table;
+}
+
+struct Painted {
+    Shade shade = Shade::Dark; // not the table's first entry: the default comes from the struct
+};
 } // namespace
 
 class TestParamSpec : public QObject {
@@ -99,6 +108,26 @@ private slots:
             QCOMPARE(e.key(), std::string("speed"));
         }
         QVERIFY_THROWS_EXCEPTION(ParamError, (void)withValues(base, fields, {{"colour", 1.0}}));
+    }
+    void choicesBindToEnums() {
+        const std::vector<ParamField<Painted>> fields{
+            bindChoice(&Painted::shade, makeChoice("shade", "Shade", "Look", "Light or dark."))};
+        const ParamSpec& spec = fields[0].spec;
+        QCOMPARE(spec.kind, ParamKind::Choice);
+        QCOMPARE(spec.choices, (std::vector<std::string>{"light", "dark"}));
+        QCOMPARE(std::get<std::string>(spec.defaultValue), std::string("dark"));
+        QCOMPARE(std::get<std::string>(valuesOf(Painted{}, fields).at("shade")), std::string("dark"));
+        const Painted light = withValues(Painted{}, fields, {{"shade", std::string("light")}});
+        QVERIFY(light.shade == Shade::Light);
+        QCOMPARE(nameOf(light.shade), std::string("light"));
+        QVERIFY(choiceNamed<Shade>("dark") == Shade::Dark);
+        QVERIFY(!choiceNamed<Shade>("drak"));
+        try {
+            (void)withValues(Painted{}, fields, {{"shade", std::string("drak")}});
+            QFAIL("a misspelt choice was accepted");
+        } catch (const ParamError& e) {
+            QVERIFY2(std::string(e.what()).find("light, dark") != std::string::npos, e.what());
+        }
     }
     void errorsNameParametersByKeyOrByLabel() {
         // The command line reads keys as it always did; the panel reads each parameter's label.

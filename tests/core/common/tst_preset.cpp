@@ -56,7 +56,7 @@ private slots:
         QCOMPARE(md.dt, 1e-4);
         QCOMPARE(md.left(), -1.0);
         QCOMPARE(md.right(), 1.0);
-        QCOMPARE(md.integrator, std::string("velocity-verlet"));
+        QVERIFY(md.integrator == MdIntegrator::VelocityVerlet);
         const auto& s = static_cast<const MdModel&>(*model).state();
         for (std::size_t i = 0; i < s.size(); ++i)
             QVERIFY(std::abs(std::hypot(s.vx[i], s.vy[i]) - 1.0) < 1e-12);
@@ -66,10 +66,16 @@ private slots:
         QTemporaryDir dir;
         for (const auto& builtin : builtinPresets()) {
             Preset p = builtin.preset;
-            const bool hasObstacles = createModel(p.model)->tools() != nullptr; // a DSMC cell has none
+            const auto model = instantiate(p);
+            const bool hasObstacles = model->tools() != nullptr; // a DSMC cell has none
             if (hasObstacles) {
-                p.obstacles.push_back({Obstacle::Shape::Disc, 0.1, -0.2, 0.15});
-                p.obstacles.push_back({Obstacle::Shape::Box, -0.3, 0.4, 0.1, 0.2, 0.05});
+                // Inside each scene's box: obstacle centres outside it are refused.
+                const SceneView view = model->sceneView();
+                const double cx = 0.5 * (view.left + view.right), cy = 0.5 * (view.bottom + view.top);
+                const double w = view.right - view.left, h = view.top - view.bottom;
+                p.obstacles.push_back({Obstacle::Shape::Disc, cx + 0.05 * w, cy - 0.1 * h, 0.075 * w});
+                p.obstacles.push_back(
+                    {Obstacle::Shape::Box, cx - 0.15 * w, cy + 0.2 * h, 0.05 * w, 0.1 * w, 0.05});
             }
             const auto* specs = specsForModel(p.model);
             const std::string path =
@@ -110,8 +116,8 @@ private slots:
     }
 
     void unsupportedSchema() {
-        const QString m = errorOf(R"({"schema": 2, "model": "gas"})");
-        QVERIFY2(m.contains("schema 2 is not supported"), qPrintable(m));
+        const QString m = errorOf(R"({"schema": 3, "model": "gas"})");
+        QVERIFY2(m.contains("schema 3 is not supported"), qPrintable(m));
     }
 
     void unknownModel() { QVERIFY(errorOf(R"({"schema": 1, "model": "plasma"})").contains("unknown model")); }

@@ -1,5 +1,6 @@
-// Statistics helpers: the Rayleigh (2D Maxwell–Boltzmann) moments of physics.md, the KS test against
-// exact samples and the power-law fit used for convergence orders; histogram normalisation.
+// Statistics helpers: the Rayleigh (2D Maxwell–Boltzmann) moments of
+// docs/gas.md#maxwell-boltzmann-speeds-in-2d, the KS test against exact samples and the power-law fit used
+// for convergence orders; histogram normalisation.
 #include "common/Histogram.h"
 #include "common/Philox.h"
 #include "common/Statistics.h"
@@ -12,7 +13,7 @@ class TestStatistics : public QObject {
     Q_OBJECT
 private slots:
     void rayleighMatchesReferenceMoments() {
-        // In units of √(kT/m): median 1.17741 (physics.md §1), most probable 1.
+        // In units of √(kT/m): median 1.17741 (docs/gas.md#maxwell-boltzmann-speeds-in-2d), most probable 1.
         QVERIFY(std::abs(rayleighCdf(1.17741, 1.0, 1.0) - 0.5) < 1e-5);
         QVERIFY(rayleighPdf(1.0, 1.0, 1.0) > rayleighPdf(0.99, 1.0, 1.0));
         QVERIFY(rayleighPdf(1.0, 1.0, 1.0) > rayleighPdf(1.01, 1.0, 1.0));

@@ -105,12 +105,12 @@ private slots:
     void badParametersAreRejectedWithTheirKey() {
         DsmcModel model;
         try {
-            model.setParams({{"count_1", 1.0}, {"count_2", 0.0}});
+            model.setParams({{"count_a", 1.0}, {"count_b", 0.0}});
             QFAIL("one particle cannot collide");
         } catch (const ParamError& e) {
-            QCOMPARE(QString::fromStdString(e.key()), QString("count_1"));
+            QCOMPARE(QString::fromStdString(e.key()), QString("count_a"));
         }
-        QCOMPARE(std::get<double>(model.params().at("count_1")), 1000.0); // nothing applied
+        QCOMPARE(std::get<double>(model.params().at("count_a")), 1000.0); // nothing applied
         QVERIFY_THROWS_EXCEPTION(ParamError, model.setParams({{"cross_section", std::string("soft")}}));
         QVERIFY(!model.reversible());
     }

@@ -42,8 +42,8 @@ private slots:
         p.model = "dsmc";
         p.params = {{"velocity_components", 2.0},
                     {"cross_section", "hard-sphere"},
-                    {"count_1", 4000.0},
-                    {"count_2", 4000.0},
+                    {"count_a", 4000.0},
+                    {"count_b", 4000.0},
                     {"run_steps", 0.0}};
         model.reset(p);
         const DsmcObservables start = model.observe();

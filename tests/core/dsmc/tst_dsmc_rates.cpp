@@ -1,6 +1,6 @@
-// Accepted collisions per step at equilibrium match N ν Δt / 2 (physics.md §2) for every cross-section
-// model, including the seed's; the Maxwell-molecule anisotropy decays at ν/2; the BKW moments follow
-// the exact curves.
+// Accepted collisions per step at equilibrium match N ν Δt / 2
+// (docs/dsmc.md#cross-sections-and-collision-frequency) for every cross-section model, including the seed's;
+// the Maxwell-molecule anisotropy decays at ν/2; the BKW moments follow the exact curves.
 #include "dsmc/DsmcModel.h"
 #include "dsmc/DsmcTheory.h"
 
@@ -15,7 +15,7 @@ Preset equilibriumCell(const std::string& crossSection, long long particles) {
     p.model = "dsmc";
     p.seed = 11;
     p.params = {{"initial", std::string("maxwellian")},
-                {"count_1", double(particles)},
+                {"count_a", double(particles)},
                 {"temperature", 300.0},
                 {"cross_section", crossSection},
                 {"fn", 1e8},
@@ -63,7 +63,8 @@ private slots:
     }
 
     void theSeedsMeanSigmaCrIsTheDerivedConstant() {
-        // physics.md §2: ⟨σ c_r⟩ = 1.03705e-18 (4 kT/m)^(1/4) m³/s for σ = 1e-18 c_r^-1/2.
+        // docs/dsmc.md#cross-sections-and-collision-frequency: ⟨σ c_r⟩ = 1.03705e-18 (4 kT/m)^(1/4) m³/s for
+        // σ = 1e-18 c_r^-1/2.
         DsmcModel model;
         const double m = model.parameters().mass();
         const double value = model.collisionModel().meanSigmaCr(17.83, m);
@@ -76,8 +77,8 @@ private slots:
         p.model = "dsmc";
         p.seed = 5;
         p.params = {{"cross_section", std::string("maxwell")},
-                    {"count_1", 20000.0},
-                    {"count_2", 20000.0},
+                    {"count_a", 20000.0},
+                    {"count_b", 20000.0},
                     {"fn", 2.5e7},
                     {"dt", 1e-5}};
         DsmcModel model;
@@ -108,7 +109,7 @@ private slots:
         const long long particles = 40000;
         p.params = {{"cross_section", std::string("maxwell")},
                     {"initial", std::string("bkw")},
-                    {"count_1", double(particles)},
+                    {"count_a", double(particles)},
                     {"temperature", 300.0},
                     {"fn", 5e7},
                     {"dt", 1e-5}};

@@ -1,5 +1,5 @@
-// Two-disk collisions against the analytic harmonic contact (physics.md §1): contact time
-// t_c = π √(μ/k), elastic exit velocities, pass-through above v_n = d ω, momentum conservation.
+// Two-disk collisions against the analytic harmonic contact (docs/gas.md#harmonic-contact-of-two-disks):
+// contact time t_c = π √(μ/k), elastic exit velocities, pass-through above v_n = d ω, momentum conservation.
 #include "MdTestScenes.h"
 
 #include <QtTest>

@@ -1,5 +1,6 @@
 // Time reversal: velocity Verlet run n steps forward, then n steps with −dt, retraces the trajectory;
-// in floating point the return error is round-off amplified by the gas's chaos (physics.md §1).
+// in floating point the return error is round-off amplified by the gas's chaos
+// (docs/gas.md#reversibility-in-floating-point).
 #include "MdTestScenes.h"
 #include "catalog/ModelCatalog.h"
 

@@ -1,5 +1,6 @@
 // Blow-up detection: an unstable time step or a broken state stops the model with what failed, when,
-// and a hint that names the stability limit (physics.md §1: ω dt ≤ 2 for Verlet, none for explicit Euler).
+// and a hint that names the stability limit (docs/gas.md#integrators-on-the-harmonic-oscillator: ω dt ≤ 2 for
+// Verlet, none for explicit Euler).
 #include "MdTestScenes.h"
 #include "catalog/ModelCatalog.h"
 

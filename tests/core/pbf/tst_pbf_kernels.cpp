@@ -1,7 +1,8 @@
-// The PBF kernels (physics.md §3): the 2D constants integrate to 1 over the plane, the seed's 3D ones to
-// 315/(256 h) and 3/(2 h); the spiky gradient is the derivative of the spiky kernel and antisymmetric in
-// the pair; s_corr is −k at r = Δq h.
+// The PBF kernels (docs/fluid.md#kernel-normalisation): the 2D constants integrate to 1 over the plane, the
+// seed's 3D ones to 315/(256 h) and 3/(2 h); the spiky gradient is the derivative of the spiky kernel and
+// antisymmetric in the pair; s_corr is −k at r = Δq h.
 #include "pbf/PbfKernels.h"
+#include "pbf/PbfParams.h"
 
 #include <QtTest>
 #include <numbers>
@@ -36,7 +37,7 @@ private slots:
     }
     void twoDimensionalConstantsIntegrateToOne() {
         QFETCH(double, h);
-        const auto k = pbf::Kernels::make(h, "2d", true);
+        const auto k = pbf::Kernels::make(h, PbfKernelConstants::Normalised2d, true);
         // W at r = 0 through the self weight (pairs at r = 0 weigh nothing, as in the seed).
         const auto poly6 = [&](double r) { return r > 0 ? k.w(r * r) : k.selfWeight(); };
         QVERIFY(std::abs(integrateOverDisc(poly6, h) - 1.0) < 1e-9);
@@ -45,7 +46,7 @@ private slots:
 
     void seedConstantsAreTheThreeDimensionalOnes() {
         const double h = 1.1;
-        const auto k = pbf::Kernels::make(h, "seed-3d", true);
+        const auto k = pbf::Kernels::make(h, PbfKernelConstants::Seed3d, true);
         const auto poly6 = [&](double r) { return r > 0 ? k.w(r * r) : k.selfWeight(); };
         QVERIFY(std::abs(integrateOverDisc(poly6, h) - 315.0 / (256.0 * h)) < 1e-9);
         QVERIFY(std::abs(integrateOverDisc([&](double r) { return k.wSpiky(r); }, h) - 1.5 / h) < 1e-9);
@@ -53,7 +54,7 @@ private slots:
         const double r = 0.6;
         const double x = (h * h - r * r) / (h * h * h);
         QCOMPARE(k.w(r * r), 315.0 / (64.0 * std::numbers::pi) * x * x * x);
-        QCOMPARE(pbf::Kernels::make(h, "seed-3d", false).selfWeight(), 0.0);
+        QCOMPARE(pbf::Kernels::make(h, PbfKernelConstants::Seed3d, false).selfWeight(), 0.0);
         QCOMPARE(k.w(0.0), 0.0);
         QCOMPARE(k.w(h * h), 0.0);
     }
@@ -66,7 +67,8 @@ private slots:
     void spikyGradientIsTheKernelsDerivative() {
         QFETCH(QString, normalisation);
         const double h = 1.1;
-        const auto k = pbf::Kernels::make(h, normalisation.toStdString(), false);
+        const auto k =
+            pbf::Kernels::make(h, *choiceNamed<PbfKernelConstants>(normalisation.toStdString()), false);
         for (double r : {0.05, 0.3, 0.7, 1.0, 1.09}) {
             const double dr = 1e-6;
             const double numeric = (k.wSpiky(r + dr) - k.wSpiky(r - dr)) / (2 * dr);
@@ -79,7 +81,7 @@ private slots:
     }
 
     void spikyGradientIsAntisymmetric() {
-        const auto k = pbf::Kernels::make(1.1, "2d", true);
+        const auto k = pbf::Kernels::make(1.1, PbfKernelConstants::Normalised2d, true);
         const double xi = 0.31, yi = -0.12, xj = -0.27, yj = 0.45;
         const double dx = xi - xj, dy = yi - yj, r2 = dx * dx + dy * dy;
         const double gijx = k.gradFactor(r2) * dx, gijy = k.gradFactor(r2) * dy;
@@ -91,7 +93,7 @@ private slots:
 
     void artificialPressureIsMinusKAtTheReferenceDistance() {
         const double h = 1.1;
-        const auto k = pbf::Kernels::make(h, "seed-3d", false);
+        const auto k = pbf::Kernels::make(h, PbfKernelConstants::Seed3d, false);
         const double dq = 0.3 * h;
         pbf::ArtificialPressure s{0.001, 1.0 / k.w(dq * dq), 4};
         QVERIFY(std::abs(s(k.w(dq * dq)) + 0.001) < 1e-15);

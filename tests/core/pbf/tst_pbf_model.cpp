@@ -2,6 +2,7 @@
 // conserved with the drain off and removed from the bottom with it on; nobody leaves the box; the
 // dam-break front stays below the shallow-water bound; a dragged obstacle pushes the fluid; runs repeat
 // bit for bit at 1 and 2 threads.
+#include "../BackendRows.h"
 #include "catalog/ModelCatalog.h"
 #include "pbf/PbfModel.h"
 
@@ -16,8 +17,8 @@ namespace {
 // The dam-break settings (2D kernels, ρ₀ of the spawn grid, ε = 1) with a block of fluid and a box.
 Preset tank(double width, double height, double fillWidth, double fillHeight) {
     Preset p = loadPreset("fluid-dam-break");
-    p.params["world_width"] = width;
-    p.params["world_height"] = height;
+    p.params["box_width"] = width;
+    p.params["box_height"] = height;
     p.params["fill_x1"] = fillWidth;
     p.params["fill_y1"] = fillHeight;
     p.params["run_steps"] = 0.0;
@@ -109,11 +110,14 @@ private slots:
         QCOMPARE(profiles[0].y.back(), errors.back());
     }
 
+    void particlesAreConservedWithTheDrainOff_data() { test::addBackendRows(); }
+
+    // Counts are exact on both rows: the GL model spawns on the CPU state and hands it to the GPU.
     void particlesAreConservedWithTheDrainOff() {
         Preset p = tank(20, 16, 8, 8);
         p.params["max_particles"] = 600.0;
-        PbfModel model;
-        model.reset(p);
+        PL_MODEL_ON_ROW_BACKEND(made, p);
+        auto& model = made.as<PbfModel>();
         const std::size_t start = model.particleCount();
         QCOMPARE(start, std::size_t(20 * 20));                             // 8 × 8 at spacing 0.4
         const std::string message = model.spawnInRectangle(12, 8, 20, 16); // 20 × 20 more grid points
@@ -132,7 +136,7 @@ private slots:
         QVERIFY_THROWS_EXCEPTION(PresetError, model.reset(p)); // the initial block (400) exceeds the cap
         p.params["max_particles"] = 400.0;
         model.reset(p);
-        model.setParams({{"gravity", false}});
+        model.setParams({{"gravity_on", false}});
         const std::string message = model.spawnInRectangle(12, 10, 16, 14); // 10 × 10 above the pool
         QVERIFY2(message.find("the drain will remove the 100 lowest") != std::string::npos, message.c_str());
         model.step();
@@ -164,8 +168,12 @@ private slots:
         QVERIFY(!model.failure());
     }
 
+    void damBreakFrontStaysBelowTheShallowWaterBound_data() { test::addBackendRows(); }
+
+    // The bound is physics (Ritter's front), not a tolerance: the GL row's float32 front obeys it too.
     void damBreakFrontStaysBelowTheShallowWaterBound() {
-        auto model = instantiate(loadPreset("fluid-dam-break"));
+        PL_MODEL_ON_ROW_BACKEND(made, loadPreset("fluid-dam-break"));
+        Model* model = made.model.get();
         const auto columns = model->seriesColumns();
         const auto index = [&](const char* name) {
             return std::find(columns.begin(), columns.end(), name) - columns.begin();
@@ -187,7 +195,7 @@ private slots:
 
     void draggedObstaclePushesTheFluid() {
         Preset p = loadPreset("fluid-obstacle");
-        p.params["world_width"] = 40.0;
+        p.params["box_width"] = 40.0;
         p.params["fill_x1"] = 40.0;
         p.params["fill_y1"] = 8.0;
         p.obstacles[0].x = 12;

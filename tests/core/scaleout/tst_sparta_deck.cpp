@@ -158,7 +158,7 @@ private slots:
     void importRoundTripGivesOurObservables() {
         QTemporaryDir dir;
         const std::string folder = dir.path().toStdString();
-        auto cell = cellFor("dsmc-bkw", {{"count_1", 3000.0}});
+        auto cell = cellFor("dsmc-bkw", {{"count_a", 3000.0}});
         const auto deck = scaleout::spartaDeck(*cell, {40, 40});
         for (const auto& f : deck.files) writeFileAtomically(folder + "/" + f.name, f.content);
         for (int s = 0; s < 40; ++s) cell->step();

@@ -1,3 +1,4 @@
+// The Qt-made GL 4.3 context for the GPU models, and the choice of the app's compute context.
 #include "QtGlContext.h"
 
 #include <QGuiApplication>

@@ -1,8 +1,9 @@
+// The machine benchmark dialog: queues the scene × backend × N jobs and plots each point as it finishes.
 #include "BenchmarkDialog.h"
 
-#include "QtGlContext.h"
 #include "plots/PlotExport.h"
 #include "plots/PlotStyle.h"
+#include "viewport/QtGlContext.h"
 
 #include <QDialogButtonBox>
 #include <QLabel>

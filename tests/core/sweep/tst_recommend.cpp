@@ -1,5 +1,5 @@
 // Recommend picks the cheapest measured setting that meets the target, and never a failed one.
-#include "methods/Recommend.h"
+#include "common/sweep/Recommend.h"
 
 #include <QtTest>
 

@@ -1,8 +1,8 @@
 // The sweep runner survives every failure class: a cell that throws (bad parameters, no memory, anything
 // else), blows up, escapes the box, diverges or over-compresses is classified with a message, and
 // nothing non-finite leaves it; the cells before and after it are unaffected.
+#include "common/sweep/CellOutcome.h"
 #include "md/StabilityMap.h"
-#include "methods/CellOutcome.h"
 #include "pbf/FluidSweep.h"
 
 #include <QtTest>

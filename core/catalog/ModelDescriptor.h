@@ -1,0 +1,72 @@
+// Everything the application knows about one model kind, written once in the kind's registration file
+// (md/MdRegistration.cpp, dsmc/DsmcRegistration.cpp, pbf/PbfRegistration.cpp) and read by the catalog,
+// the backend factory, the CLI and the UI. Qt-free: plots are described as data the UI draws.
+#pragma once
+
+#include "common/Model.h"
+#include "common/Preset.h"
+#include "common/SeriesTable.h"
+
+#include <cstddef>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace pl {
+
+struct PlotColour {
+    int red = 0, green = 0, blue = 0; // sRGB, 0…255
+};
+
+struct PlotCurve {
+    std::string column; // a series column; in a profile panel, a profile's name
+    std::string label;  // legend text
+    PlotColour colour;
+    bool dashed = false; // exact theory drawn beside the measured curve
+};
+
+struct PlotPanel {
+    std::string yLabel;
+    std::vector<PlotCurve> curves; // none: the panel is absent
+    bool logarithmic = false;
+    std::string xColumn = "time"; // the series column on the x axis
+    std::string xLabel{};         // empty: "time"
+    // A profile panel plots the model's profiles() of its latest state instead of series columns.
+    bool profile = false;
+};
+
+// One time-series dock of the kind: an upper panel and an optional lower one.
+struct PlotSpec {
+    std::string name;  // stable: dock layout and export file names use it, e.g. "energyPlot"
+    std::string title; // the dock's title
+    PlotPanel upper;
+    PlotPanel lower;
+};
+
+struct ModelDescriptor {
+    std::string kind;  // "gas": presets' "model", resources/presets/<kind>/, the CLI's scene names
+    std::string title; // "Gas (molecular dynamics)"
+    const std::vector<ParamSpec>* specs = nullptr;
+    // A CPU model reset to its defaults.
+    std::unique_ptr<Model> (*create)() = nullptr;
+    // The particles reset(preset) makes, computed from the preset's parameters and obstacles without
+    // building a model. Throws ParamError for a value its specs refuse.
+    std::size_t (*particleCount)(const Preset& preset) = nullptr;
+    // What sampleSeries() returns, column for column (from the model's SeriesTable).
+    std::vector<SeriesColumn> series;
+    std::vector<PlotSpec> plots;
+    // The distribution docks that apply, by the UI's dock name: "speedHistogram", "vxHistogram".
+    std::vector<std::string> distributions;
+};
+
+// Colours the plot specs share, so the scenes' docks read alike.
+namespace plot_colours {
+inline constexpr PlotColour kBlue{40, 90, 170}, kOrange{220, 120, 20}, kGreen{40, 140, 70}, kRed{190, 40, 40},
+    kGrey{90, 90, 90};
+} // namespace plot_colours
+
+// A preset of this kind with every parameter at its spec default, seed 1 and no obstacles: what a new
+// experiment starts from.
+Preset defaultPreset(const ModelDescriptor& descriptor);
+
+} // namespace pl

@@ -1,0 +1,200 @@
+// Preset schema 1 → 2: every schema-1 file (the original built-ins and saved user presets, under
+// tests/data/schema1) loads to exactly the parameters, seed and obstacles of its schema-2 twin; old
+// snapshots load; what is written is schema 2; bad schema-1 entries are named as the file spells them.
+#include "catalog/ModelCatalog.h"
+#include "common/AtomicFile.h"
+#include "common/Snapshot.h"
+
+#include <QTemporaryDir>
+#include <QtTest>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+using namespace pl;
+
+namespace {
+
+const std::filesystem::path kSchema1 = std::filesystem::path(PARTICLELAB_TEST_DATA) / "schema1";
+const std::filesystem::path kSchema2 = std::filesystem::path(PARTICLELAB_TEST_DATA) / "schema2";
+
+int schemaOf(const std::string& text) {
+    return nlohmann::json::parse(text).at("schema").get<int>();
+}
+
+// The twin of a schema-1 file: the built-in of that name (resources/presets), else tests/data/schema2.
+Preset twinOf(const std::string& stem) {
+    for (const auto& b : builtinPresets())
+        if (b.name == stem) return b.preset;
+    const std::string path = (kSchema2 / (stem + ".json")).string();
+    if (schemaOf(readWholeFile(path)) != Preset::kSchema) throw std::runtime_error(path + " is not schema 2");
+    return readPresetFile(path, specsForModel);
+}
+
+bool sameObstacles(const std::vector<Obstacle>& a, const std::vector<Obstacle>& b) {
+    if (a.size() != b.size()) return false;
+    for (std::size_t i = 0; i < a.size(); ++i)
+        if (a[i].shape != b[i].shape || a[i].x != b[i].x || a[i].y != b[i].y || a[i].radius != b[i].radius ||
+            a[i].halfWidth != b[i].halfWidth || a[i].halfHeight != b[i].halfHeight)
+            return false;
+    return true;
+}
+
+// The first parameter whose values differ, or "" when the two maps are identical.
+std::string firstDifference(const ParamValues& a, const ParamValues& b) {
+    for (const auto& [key, value] : a)
+        if (!b.count(key) || b.at(key) != value) return key;
+    for (const auto& [key, value] : b)
+        if (!a.count(key)) return key;
+    return {};
+}
+
+QString errorOf(const std::string& text, std::string* key = nullptr) {
+    try {
+        instantiate(parsePreset(text, specsForModel, "old.json"));
+    } catch (const PresetError& e) {
+        if (key) *key = e.key();
+        return QString::fromStdString(e.what());
+    }
+    return {};
+}
+
+std::string fluidSchema1(const std::string& params) {
+    return R"({"schema": 1, "model": "fluid", "params": {)" + params + "}}";
+}
+
+} // namespace
+
+class TestPresetMigration : public QObject {
+    Q_OBJECT
+private slots:
+    void schema1FileLoadsAsItsTwin_data() {
+        QTest::addColumn<QString>("stem");
+        int builtins = 0, saved = 0;
+        for (const auto& entry : std::filesystem::directory_iterator(kSchema1)) {
+            const std::string stem = entry.path().stem().string();
+            QTest::newRow(stem.c_str()) << QString::fromStdString(stem);
+            (stem.rfind("user-", 0) == 0 ? saved : builtins)++;
+        }
+        QVERIFY(builtins >= 10 && saved >= 3); // the ten original built-ins and a saved preset per model
+    }
+    void schema1FileLoadsAsItsTwin() {
+        QFETCH(QString, stem);
+        const std::string path = (kSchema1 / (stem.toStdString() + ".json")).string();
+        QCOMPARE(schemaOf(readWholeFile(path)), 1);
+        const Preset old = readPresetFile(path, specsForModel);
+        const Preset twin = twinOf(stem.toStdString());
+        QCOMPARE(old.model, twin.model);
+        QCOMPARE(old.name, twin.name);
+        QCOMPARE(old.description, twin.description);
+        QCOMPARE(old.seed, twin.seed);
+        QVERIFY2(firstDifference(old.params, twin.params).empty(),
+                 firstDifference(old.params, twin.params).c_str());
+        QVERIFY(sameObstacles(old.obstacles, twin.obstacles));
+        // The models they make hold the same parameters, defaults included.
+        const auto a = instantiate(old), b = instantiate(twin);
+        QVERIFY2(firstDifference(a->params(), b->params()).empty(),
+                 firstDifference(a->params(), b->params()).c_str());
+    }
+
+    void builtinsAreSchema2() {
+        for (const auto& b : builtinPresets()) {
+            const auto path = std::filesystem::path(PARTICLELAB_TEST_DATA) / ".." / ".." / "resources" /
+                              "presets" / b.folder / (b.name + ".json");
+            QVERIFY2(schemaOf(readWholeFile(path.string())) == Preset::kSchema, b.name.c_str());
+        }
+    }
+
+    void fluidGravityBecomesTheSharedKeys() {
+        const Preset p = readPresetFile((kSchema1 / "user-fluid-tank.json").string(), specsForModel);
+        QCOMPARE(std::get<bool>(p.params.at("gravity_on")), false);
+        QCOMPARE(std::get<double>(p.params.at("gravity")), 5.5); // was gravity_y = −5.5 (up positive)
+        QCOMPARE(std::get<double>(p.params.at("box_width")), 60.0);
+        QVERIFY(!p.params.count("gravity_y") && !p.params.count("world_width"));
+    }
+
+    void writesSchema2() {
+        QTemporaryDir dir;
+        for (const char* stem : {"user-fluid-tank", "user-gas-piston", "user-dsmc-beams", "fluid-seed"}) {
+            const Preset old =
+                readPresetFile((kSchema1 / (std::string(stem) + ".json")).string(), specsForModel);
+            const std::string path = dir.filePath(stem).toStdString() + ".json";
+            writePresetFile(path, old, *specsForModel(old.model)); // what the app's Save does
+            const std::string text = readWholeFile(path);
+            QCOMPARE(schemaOf(text), Preset::kSchema);
+            for (const char* gone : {"world_width", "gravity_y", "count_1", "hist_bins"})
+                QVERIFY2(text.find(std::string("\"") + gone + "\"") == std::string::npos, gone);
+            const Preset back = parsePreset(text, specsForModel);
+            const auto a = instantiate(old), b = instantiate(back);
+            QVERIFY2(firstDifference(a->params(), b->params()).empty(), stem);
+        }
+    }
+
+    void oldSnapshotLoads() {
+        for (const char* stem : {"user-fluid-tank", "user-gas-piston", "user-dsmc-beams"}) {
+            const std::string oldText = readWholeFile((kSchema1 / (std::string(stem) + ".json")).string());
+            auto model = instantiate(twinOf(stem));
+            for (int s = 0; s < 3; ++s) model->step();
+            const Snapshot now = takeSnapshot(*model);
+            // The same snapshot as a schema-1 program wrote it: its state, and the preset in schema 1.
+            nlohmann::json root = nlohmann::json::parse(serializeSnapshot(now, model->paramSpecs()));
+            QCOMPARE(root["preset"]["schema"].get<int>(), Preset::kSchema);
+            root["preset"] = nlohmann::json::parse(oldText);
+            std::unique_ptr<Model> resumed, reference;
+            try {
+                resumed = instantiate(parseSnapshot(root.dump(), specsForModel, "old-snapshot.json"));
+                reference = instantiate(
+                    parseSnapshot(serializeSnapshot(now, model->paramSpecs()), specsForModel, "now"));
+            } catch (const PresetError& e) {
+                QFAIL(qPrintable(QString("%1: %2").arg(stem, e.what())));
+            }
+            QVERIFY2(firstDifference(resumed->params(), reference->params()).empty(), stem);
+            QVERIFY2(resumed->saveState().arrays == reference->saveState().arrays, stem);
+            resumed->step();
+            reference->step();
+            QVERIFY2(resumed->saveState().arrays == reference->saveState().arrays, stem);
+        }
+    }
+
+    void schema2KeyInASchema1FileIsNamed() {
+        std::string key;
+        const QString m = errorOf(fluidSchema1(R"("box_width": 50)"), &key);
+        QCOMPARE(key, std::string("params.box_width"));
+        QVERIFY2(m.contains("schema-2 key"), qPrintable(m));
+        QCOMPARE(errorOf(R"({"schema": 1, "model": "gas", "params": {"gravity_on": false}})", &key).isEmpty(),
+                 false);
+        QCOMPARE(key, std::string("params.gravity_on"));
+    }
+
+    void badSchema1ValuesAreNamedAsWritten() {
+        std::string key;
+        QVERIFY(errorOf(fluidSchema1(R"("gravity_y": "down")"), &key).contains("must be a number"));
+        QCOMPARE(key, std::string("params.gravity_y"));
+        const QString range = errorOf(fluidSchema1(R"("gravity_y": -2e4)"), &key);
+        QCOMPARE(key, std::string("params.gravity_y"));
+        QVERIFY2(range.contains("now 'gravity'"), qPrintable(range));
+        QVERIFY(!errorOf(fluidSchema1(R"("gravity": 9.8)"), &key).isEmpty()); // schema 1: a switch
+        QCOMPARE(key, std::string("params.gravity"));
+        QVERIFY(!errorOf(R"({"schema": 1, "model": "dsmc", "params": {"count_1": -5}})", &key).isEmpty());
+        QCOMPARE(key, std::string("params.count_1"));
+        QVERIFY(errorOf(fluidSchema1(R"("gravity_y": 0)")).isEmpty());
+    }
+
+    void schema2FileUsesOnlySchema2Keys() {
+        std::string key;
+        QVERIFY(
+            !errorOf(R"({"schema": 2, "model": "fluid", "params": {"world_width": 50}})", &key).isEmpty());
+        QCOMPARE(key, std::string("params.world_width"));
+        QVERIFY(!errorOf(R"({"schema": 2, "model": "fluid", "params": {"gravity": true}})", &key).isEmpty());
+        QCOMPARE(key, std::string("params.gravity"));
+    }
+
+    void unknownSchemasAreRefused() {
+        for (int schema : {0, Preset::kSchema + 1}) {
+            const QString m = errorOf(R"({"schema": )" + std::to_string(schema) + R"(, "model": "gas"})");
+            QVERIFY2(m.contains("not supported") && m.contains("schemas 1 to 2"), qPrintable(m));
+        }
+    }
+};
+
+QTEST_APPLESS_MAIN(TestPresetMigration)
+#include "tst_preset_migration.moc"

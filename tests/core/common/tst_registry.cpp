@@ -1,0 +1,159 @@
+// The model registry: every registration agrees with the model it creates (series columns, particle
+// count, parameters), its plots name columns it has, and every built-in preset belongs to a registered kind.
+#include "catalog/ModelCatalog.h"
+#include "gl/GpuModels.h"
+
+#include <QtTest>
+#include <algorithm>
+#include <set>
+
+using namespace pl;
+
+namespace {
+
+std::vector<std::string> namesOf(const std::vector<SeriesColumn>& columns) {
+    std::vector<std::string> names;
+    for (const SeriesColumn& c : columns) names.push_back(c.name);
+    return names;
+}
+
+bool contains(const std::vector<std::string>& list, const std::string& name) {
+    return std::find(list.begin(), list.end(), name) != list.end();
+}
+
+} // namespace
+
+class TestRegistry : public QObject {
+    Q_OBJECT
+private slots:
+    void kindsAreUniqueAndFound() {
+        std::set<std::string> kinds;
+        for (const ModelDescriptor& d : modelCatalog()) {
+            QVERIFY2(kinds.insert(d.kind).second, d.kind.c_str());
+            QCOMPARE(findModel(d.kind), &d);
+            QVERIFY(!d.title.empty());
+            QCOMPARE(specsForModel(d.kind), d.specs);
+            const auto model = createModel(d.kind);
+            QVERIFY(model);
+            QCOMPARE(model->kind(), d.kind);
+            QCOMPARE(&model->paramSpecs(), d.specs);
+        }
+        QVERIFY(!findModel("no-such-kind"));
+        QVERIFY(!createModel("no-such-kind"));
+        Preset unknown;
+        unknown.model = "no-such-kind";
+        QVERIFY_THROWS_EXCEPTION(PresetError, particleCount(unknown));
+    }
+
+    // The descriptor's column list is what the model samples: same names, same order, same count.
+    void seriesListMatchesSampleSeries() {
+        for (const BuiltinPreset& builtin : builtinPresets()) {
+            const ModelDescriptor* d = findModel(builtin.preset.model);
+            QVERIFY2(d, builtin.name.c_str());
+            const auto model = instantiate(builtin.preset);
+            QCOMPARE(namesOf(d->series), model->seriesColumns());
+            QCOMPARE(model->sampleSeries().size(), d->series.size());
+            model->step();
+            QCOMPARE(model->sampleSeries().size(), d->series.size());
+            std::set<std::string> unique;
+            for (const SeriesColumn& c : d->series) {
+                QVERIFY2(!c.name.empty() && !c.label.empty(), builtin.name.c_str());
+                QVERIFY2(unique.insert(c.name).second, c.name.c_str());
+            }
+        }
+    }
+
+    void particleCountFromParamsMatchesReset() {
+        for (const BuiltinPreset& builtin : builtinPresets()) {
+            const auto model = instantiate(builtin.preset);
+            QCOMPARE(particleCount(builtin.preset), model->particleCount());
+        }
+    }
+
+    // Changed counts, caps and obstacles are counted like reset() makes them.
+    void particleCountFollowsTheParameters() {
+        Preset gas = loadPreset("gas-mixture");
+        gas.params["count_a"] = 37.0;
+        Preset fluid = loadPreset("fluid-obstacle");
+        fluid.obstacles.push_back({});
+        fluid.obstacles.back().x = 60;
+        fluid.obstacles.back().y = 6;
+        fluid.obstacles.back().radius = 5;
+        Preset spaced = loadPreset("fluid-dam-break");
+        spaced.params["spawn_spacing"] = 0.7;
+        Preset dsmc = loadPreset("dsmc-seed");
+        dsmc.params["count_a"] = 500.0;
+        for (const Preset* preset : {&gas, &fluid, &spaced, &dsmc}) {
+            const auto model = instantiate(*preset);
+            QCOMPARE(particleCount(*preset), model->particleCount());
+        }
+        QVERIFY(particleCount(spaced) < particleCount(loadPreset("fluid-dam-break")));
+        QCOMPARE(particleCount(gas), std::size_t(37) + particleCount(loadPreset("gas-mixture")) -
+                                         static_cast<std::size_t>(std::get<double>(
+                                             loadPreset("gas-mixture").params.at("count_a"))));
+        QVERIFY(particleCount(fluid) < particleCount(loadPreset("fluid-obstacle")));
+        Preset bad = loadPreset("gas-seed");
+        bad.params["count_a"] = -1.0;
+        QVERIFY_THROWS_EXCEPTION(PresetError, particleCount(bad));
+    }
+
+    void plotSpecsNameExistingColumns() {
+        std::set<std::string> plotNames;
+        for (const ModelDescriptor& d : modelCatalog()) {
+            const std::vector<std::string> columns = namesOf(d.series);
+            const BuiltinPreset* first = builtinPresetsOf(d.kind).front();
+            const auto model = instantiate(first->preset);
+            model->step();
+            std::vector<std::string> profiles;
+            for (const NamedProfile& p : model->profiles()) profiles.push_back(p.name);
+            for (const PlotSpec& plot : d.plots) {
+                QVERIFY2(plotNames.insert(plot.name).second, plot.name.c_str());
+                QVERIFY2(!plot.upper.curves.empty(), plot.name.c_str());
+                for (const PlotPanel* panel : {&plot.upper, &plot.lower}) {
+                    QVERIFY2(contains(columns, panel->xColumn), plot.name.c_str());
+                    for (const PlotCurve& curve : panel->curves)
+                        QVERIFY2(contains(panel->profile ? profiles : columns, curve.column),
+                                 (plot.name + ": " + curve.column).c_str());
+                }
+            }
+        }
+    }
+
+    void everyBuiltinPresetsModelIsRegistered() {
+        for (const BuiltinPreset& builtin : builtinPresets()) {
+            QVERIFY2(findModel(builtin.preset.model), builtin.name.c_str());
+            QCOMPARE(builtin.folder, builtin.preset.model); // resources/presets/<kind>/
+        }
+        std::size_t listed = 0;
+        for (const ModelDescriptor& d : modelCatalog()) {
+            QVERIFY2(!builtinPresetsOf(d.kind).empty(), d.kind.c_str());
+            listed += builtinPresetsOf(d.kind).size();
+        }
+        QCOMPARE(listed, builtinPresets().size());
+    }
+
+    // A new experiment starts from defaultPreset(): the model a plain create() gives.
+    void defaultPresetIsTheDefaultModel() {
+        for (const ModelDescriptor& d : modelCatalog()) {
+            const Preset defaults = defaultPreset(d);
+            const Preset made = d.create()->toPreset();
+            QCOMPARE(defaults.model, made.model);
+            QCOMPARE(defaults.seed, made.seed);
+            QCOMPARE(defaults.obstacles.size(), made.obstacles.size());
+            QVERIFY2(defaults.params == made.params, d.kind.c_str());
+            QCOMPARE(instantiate(defaults)->particleCount(), d.create()->particleCount());
+        }
+    }
+
+    void gpuModelsAreRegisteredKinds() {
+        QVERIFY(!gl::gpuModels().empty());
+        for (const gl::GpuModel& m : gl::gpuModels()) {
+            QVERIFY2(findModel(m.kind), m.kind.c_str());
+            QCOMPARE(gl::findGpuModel(m.kind), &m);
+        }
+        QVERIFY(!gl::findGpuModel("dsmc"));
+    }
+};
+
+QTEST_APPLESS_MAIN(TestRegistry)
+#include "tst_registry.moc"
