@@ -1,11 +1,30 @@
-// Helpers for widget tests: answer modal message boxes automatically and count them.
+// Helpers for widget tests: clean settings, an active window of the usual size, and modal message boxes
+// answered automatically and counted.
 #pragma once
 
 #include <QApplication>
 #include <QMessageBox>
+#include <QSettings>
+#include <QStandardPaths>
+#include <QTest>
 #include <QTimer>
 
 namespace pl::test {
+
+// Settings in the test-mode locations, emptied: a test never reads or writes the user's (initTestCase).
+inline void useCleanTestSettings() {
+    QStandardPaths::setTestModeEnabled(true);
+    QSettings().clear();
+}
+
+// Shows the window at 1280 × 800 and makes it the active one (the window's shortcuts act only there);
+// false when it never becomes active.
+inline bool showActive(QWidget& window) {
+    window.resize(1280, 800);
+    window.show();
+    window.activateWindow();
+    return QTest::qWaitForWindowActive(&window);
+}
 
 // While alive, accepts every QMessageBox that opens and remembers its text.
 class MessageBoxAnswerer : public QObject {

@@ -69,10 +69,7 @@ QString statusText(ui::MainWindow& window) {
 class TestLammpsUi : public QObject {
     Q_OBJECT
 private slots:
-    void initTestCase() {
-        QStandardPaths::setTestModeEnabled(true);
-        QSettings().clear();
-    }
+    void initTestCase() { test::useCleanTestSettings(); }
 
     void init() {
         window_ = std::make_unique<ui::MainWindow>();
@@ -80,10 +77,7 @@ private slots:
         QVERIFY(window_->controller()->setParameters({{"count_a", static_cast<double>(kDisks)}}).isEmpty());
         window_->controller()->reset();
         QCOMPARE(window_->controller()->model()->particleCount(), std::size_t(kDisks));
-        window_->resize(1280, 800);
-        window_->show();
-        window_->activateWindow(); // the shortcuts (Space, .) act only in the active window
-        QVERIFY(QTest::qWaitForWindowActive(window_.get()));
+        QVERIFY(test::showActive(*window_));
     }
 
     void cleanup() {

@@ -48,18 +48,12 @@ bool looksRed(QWidget* field) {
 class TestParameterPanel : public QObject {
     Q_OBJECT
 private slots:
-    void initTestCase() {
-        QStandardPaths::setTestModeEnabled(true);
-        QSettings().clear();
-    }
+    void initTestCase() { test::useCleanTestSettings(); }
 
     void init() {
         window_ = std::make_unique<ui::MainWindow>();
         QVERIFY(window_->openPreset("gas-mixture"));
-        window_->resize(1280, 800);
-        window_->show();
-        window_->activateWindow();
-        QVERIFY(QTest::qWaitForWindowActive(window_.get()));
+        QVERIFY(test::showActive(*window_));
         panel_ = window_->parameters();
     }
 

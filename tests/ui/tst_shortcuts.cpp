@@ -4,6 +4,7 @@
 #include "ExperimentDocument.h"
 #include "MainWindow.h"
 #include "SimulationController.h"
+#include "UiTestSupport.h"
 #include "panels/ParameterPanel.h"
 #include "viewport/ViewportCore.h"
 
@@ -48,18 +49,12 @@ double paramOf(ui::MainWindow& window, const std::string& key) {
 class TestShortcuts : public QObject {
     Q_OBJECT
 private slots:
-    void initTestCase() {
-        QStandardPaths::setTestModeEnabled(true);
-        QSettings().clear();
-    }
+    void initTestCase() { test::useCleanTestSettings(); }
 
     void init() {
         window_ = std::make_unique<ui::MainWindow>();
         QVERIFY(window_->openPreset("gas-mixture"));
-        window_->resize(1280, 800);
-        window_->show();
-        window_->activateWindow();
-        QVERIFY(QTest::qWaitForWindowActive(window_.get()));
+        QVERIFY(test::showActive(*window_));
         speed_ = window_->findChild<QSpinBox*>("stepsPerFrame");
         QVERIFY(speed_);
     }
