@@ -9,6 +9,7 @@
 #include "ViewportRoom.h"
 #include "panels/ParameterPanel.h"
 #include "plots/DistributionPlot.h"
+#include "plots/ProfilePlot.h"
 #include "plots/SeriesPlotSpecs.h"
 #include "present/PresentMode.h"
 #include "viewport/GLViewport.h"
@@ -133,6 +134,17 @@ void MainWindow::createDocks() {
     }
     if (!seriesPlots_.empty())
         findChild<QDockWidget*>(seriesPlots_.front()->spec().objectName + "Dock")->raise();
+    // A field along the line drawn with the Profile line tool: for every scene with sampled fields.
+    profilePlot_ = new ProfilePlot(controller_, viewportCore_, this);
+    profilePlot_->setMinimumSize(kPlotMinimum);
+    QDockWidget* profile = addDock(profilePlot_, tr("Profile"), "profileDock", Qt::RightDockWidgetArea);
+    profile->setProperty("needsFields", true);
+    if (previous) tabifyDockWidget(previous, profile);
+    connect(viewportCore_, &ViewportCore::profileLineChanged, profile, [this, profile] {
+        if (!viewportCore_->profileLine() || (present_ && present_->isActive())) return;
+        profile->show(); // a line just drawn: its profile comes to the front
+        profile->raise();
+    });
     // Experiments on the numerics themselves, for every scene: opened from the View menu as a floating
     // window, so that while hidden it takes no room from the scene's docks.
     QDockWidget* lab = addDock(new MethodsLab(this, controller_), tr("Methods lab"), "methodsLabDock",
@@ -149,7 +161,8 @@ void MainWindow::modelChanged() {
     scenePicker_->setCurrentIndex(scenePicker_->findData(kind));
     for (QDockWidget* dock : findChildren<QDockWidget*>()) {
         const QStringList kinds = dock->property("kinds").toStringList();
-        const bool applies = kinds.isEmpty() || kinds.contains(kind);
+        const bool applies = (kinds.isEmpty() || kinds.contains(kind)) &&
+                             (!dock->property("needsFields").toBool() || model->sampledFields());
         dock->toggleViewAction()->setEnabled(applies);
         if (!applies && !dock->isHidden()) {
             hiddenForScene_.insert(dock);

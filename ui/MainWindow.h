@@ -19,6 +19,8 @@ namespace pl::ui {
 class DistributionPlot;
 class ExperimentDocument;
 class ParameterPanel;
+class ProfilePlot;
+class ViewChooser;
 class SeriesPlot;
 class SimulationController;
 class ViewportCore;
@@ -39,6 +41,8 @@ public:
     DistributionPlot* histogram() const { return histogram_; }
     ParameterPanel* parameters() const { return parameters_; }
     const std::vector<SeriesPlot*>& seriesPlots() const { return seriesPlots_; }
+    ProfilePlot* profilePlot() const { return profilePlot_; }
+    ViewChooser* viewChooser() const { return viewChooser_; }
     QWidget* viewport() const { return viewport_; }
     ViewportCore* viewportCore() const { return viewportCore_; }
     QImage viewportImage() const;
@@ -92,6 +96,8 @@ private:
     ParameterPanel* parameters_ = nullptr;
     DistributionPlot* histogram_ = nullptr;
     std::vector<SeriesPlot*> seriesPlots_;
+    ProfilePlot* profilePlot_ = nullptr; // scenes with sampled fields
+    ViewChooser* viewChooser_ = nullptr;
     QMenu* viewMenu_ = nullptr;
     QMenu* recentMenu_ = nullptr;
     QComboBox* scenePicker_ = nullptr;

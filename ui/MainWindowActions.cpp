@@ -4,6 +4,7 @@
 #include "MainWindow.h"
 #include "PreferencesDialog.h"
 #include "SimulationController.h"
+#include "ViewChooser.h"
 #include "catalog/ModelCatalog.h"
 #include "i18n/Translations.h"
 #include "present/PresentMode.h"
@@ -186,6 +187,9 @@ void MainWindow::createActions() {
     presentAction_->setObjectName("presentAction");
     presentAction_->setCheckable(true);
     connect(presentAction_, &QAction::toggled, this, [this](bool on) { present_->setActive(on); });
+    viewChooser_ = new ViewChooser(controller_, viewMenu_, this);
+    connect(viewChooser_, &ViewChooser::problem, this,
+            [this](const QString& problem) { statusBar()->showMessage(problem, 6000); });
     viewMenu_->addSeparator();
 }
 
@@ -229,13 +233,16 @@ void MainWindow::createToolPalette() {
         QString text, tip;
     } entries[] = {
         {ViewportTool::Drag, tr("Drag"),
-         tr("Drag obstacles and the piston; drag empty space to pan (in the fluid: to pour)")},
+         tr("Drag obstacles and the piston; drag empty space to pan (in the fluid: to pour; where fields "
+            "are sampled: to read the local values)")},
         {ViewportTool::Spawn, tr("Spawn"),
          tr("Drag a rectangle to fill it with particles, or click for one")},
         {ViewportTool::AddDisc, tr("Add disc"), tr("Click to place a disc obstacle")},
         {ViewportTool::AddBox, tr("Add box"), tr("Drag a rectangle to place a box obstacle")},
         {ViewportTool::Remove, tr("Remove"), tr("Click an obstacle to remove it")},
         {ViewportTool::Piston, tr("Piston"), tr("Drag to move the piston (when enabled in Parameters)")},
+        {ViewportTool::ProfileLine, tr("Profile line"),
+         tr("Drag a line across the flow: the Profile dock plots a sampled field along it")},
     };
     int key = Qt::Key_1;
     for (const auto& entry : entries) {
@@ -269,6 +276,8 @@ void MainWindow::createToolPalette() {
     connect(heat_, &QSlider::sliderReleased, heat_, [this] { heat_->setValue(0); });
     bar->addWidget(heat_);
     bar->addWidget(new QLabel(tr(" Heat "), bar));
+    bar->addSeparator();
+    viewChooser_->addTo(bar);
     menu->addSeparator();
     const auto scaleEnergy = [this](double factor) {
         if (controller_->scaleKineticEnergy(factor)) viewport_->update();

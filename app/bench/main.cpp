@@ -28,17 +28,36 @@ constexpr double kGasBytesPerParticleStep = 40 + 60 + 6 + 28;
 constexpr int kFluidIterations = 5;
 constexpr double kFluidBytesPerParticleStep = 28 + 52 + 3 + kFluidIterations * (12 + 20) + 24;
 
+// The tunnel's (dsmc-cylinder, collisions on): the move reads a molecule (position 8, velocity 8 + 4)
+// and writes it moved with its (cell, slot) (28) plus a 4-byte atomic; the scatter reads that and a
+// cell start (32) and writes the sorted molecule (20); the collide-and-sample pass reads each velocity
+// once for the sums (12; pair reads hit the cache within a cell, about one accepted pair per molecule
+// writes 12 more). The scan and the per-cell arrays are ~1/40 of a word per molecule.
+constexpr double kTunnelBytesPerParticleStep = 52 + 52 + 24;
+// The goal for the tunnel on an H200: particle-steps per second at 10 M molecules.
+constexpr double kTunnelGoal = 2e9;
+
 } // namespace
 
 int main(int argc, char** argv) {
     CLI::App app{"ParticleLab GPU benchmark: particle-steps per second against N, headless"};
     std::vector<std::size_t> gasSizes{4096, 16384, 65536, 262144, 1048576, 4194304};
     std::vector<std::size_t> fluidSizes{10000, 40000, 160000, 640000, 1048576};
+    std::vector<std::size_t> tunnelSizes{100000, 1000000, 10000000};
+    std::vector<std::string> scenes{"gas", "fluid", "tunnel"};
     std::size_t cpuMax = 65536;
     std::string out;
     pl::gl::BenchSettings settings;
     app.add_option("--gas", gasSizes, "Gas sizes (disks)");
     app.add_option("--fluid", fluidSizes, "Fluid sizes (particles, 5 iterations)");
+    app.add_option(
+        "--tunnel", tunnelSizes,
+        "Wind-tunnel sizes (molecules): dsmc-cylinder with collisions, F_N and the cell grid scaled");
+    app.add_option(
+           "--scenes", scenes,
+           "Scenes to time, of gas, fluid, tunnel (default all). Only the tunnel points: --scenes tunnel; "
+           "e.g. --scenes tunnel --tunnel 100000 1000000 10000000, or --tunnel 20000 on llvmpipe")
+        ->check(CLI::IsMember({"gas", "fluid", "tunnel"}));
     app.add_option("--cpu-max", cpuMax, "Largest N also timed on the CPU model (0: none)");
     app.add_option("--repeats", settings.repeats, "Timed repeats per point; the median is reported");
     app.add_option("--seconds", settings.targetSeconds, "Target seconds per repeat");
@@ -95,11 +114,16 @@ int main(int argc, char** argv) {
                   {"us_per_step", ns / kProfiledSteps / 1e3}});
         model.setProfiling(false);
     };
+    auto selected = [&](const std::string& scene) {
+        return std::find(scenes.begin(), scenes.end(), scene) != scenes.end();
+    };
     auto sweep = [&](const std::string& scene, const std::vector<std::size_t>& sizes, double bytes,
-                     double goalBytes) {
+                     double goal) {
+        if (!selected(scene)) return;
         for (std::size_t n : sizes) {
-            const pl::Preset preset =
-                scene == "gas" ? pl::gl::scaledGasPreset(n) : pl::gl::scaledFluidPreset(n);
+            const pl::Preset preset = scene == "gas"     ? pl::gl::scaledGasPreset(n)
+                                      : scene == "fluid" ? pl::gl::scaledFluidPreset(n)
+                                                         : pl::gl::scaledTunnelPreset(n);
             for (const std::string backend : {"gl", "cpu"}) {
                 if (backend == "cpu" && n > cpuMax) continue;
                 auto choice = pl::gl::createModel(scene, pl::gl::backendFromName(backend), &preset, context);
@@ -117,17 +141,18 @@ int main(int argc, char** argv) {
                       {"settle_s", p.settleSeconds},
                       {"model_bytes_per_particle_step", gpu ? bytes : 0.0},
                       {"achieved_bandwidth_fraction", gpu ? p.particleStepsPerSecond * bytes / copy : 0.0},
-                      {"goal_particle_steps_per_s", copy / goalBytes}});
+                      {"goal_particle_steps_per_s", goal}});
                 points.push_back(p);
                 if (auto* gas = dynamic_cast<pl::gl::MdModelGL*>(choice.model.get()); gas && profileEach)
                     profilePasses(*gas, n);
             }
         }
     };
-    sweep("gas", gasSizes, kGasBytesPerParticleStep, 150.0);
-    sweep("fluid", fluidSizes, kFluidBytesPerParticleStep, 700.0);
+    sweep("gas", gasSizes, kGasBytesPerParticleStep, copy / 150.0);
+    sweep("fluid", fluidSizes, kFluidBytesPerParticleStep, copy / 700.0);
+    sweep("tunnel", tunnelSizes, kTunnelBytesPerParticleStep, kTunnelGoal);
     // Where the time goes at the largest size, on a fresh model.
-    if (!gasSizes.empty() && !profileEach) {
+    if (selected("gas") && !gasSizes.empty() && !profileEach) {
         const pl::Preset preset = pl::gl::scaledGasPreset(gasSizes.back());
         pl::gl::MdModelGL model(context);
         model.reset(preset);

@@ -70,6 +70,13 @@ std::string particlesCsv(const Model& model) {
     return out.str();
 }
 
+// The sampled fields over the model's current window (sampledOutputsRefusal() checked it has them).
+std::string fieldsCsv(const Model& model) {
+    std::ostringstream out;
+    model.sampledFields()->writeFieldsCsv(out);
+    return out.str();
+}
+
 class Progress {
 public:
     Progress(long long total, bool enabled) : total_(total), enabled_(enabled), tty_(::isatty(2) != 0) {}
@@ -161,8 +168,8 @@ namespace {
 
 // Every file a run writes is checked before it starts: a long run never ends in an unwritable path.
 void checkRunOutputs(const RunOptions& options) {
-    for (const std::string* path :
-         {&options.out, &options.histogram, &options.dumpInitial, &options.dumpFinal, &options.snapshot})
+    for (const std::string* path : {&options.out, &options.histogram, &options.dumpInitial,
+                                    &options.dumpFinal, &options.snapshot, &options.fields, &options.surface})
         if (!path->empty()) checkOutputPath(*path);
 }
 
@@ -191,6 +198,13 @@ int runSimulation(const RunOptions& options) {
         std::cerr << "particlelab-cli: " << e.what() << "\n";
         return kBadInput;
     }
+    // --fields and --surface need a model that samples them; refused before anything runs or is written.
+    if (const std::string refusal =
+            sampledOutputsRefusal(*model, !options.fields.empty(), !options.surface.empty());
+        !refusal.empty()) {
+        std::cerr << "particlelab-cli: " << refusal << "\n";
+        return kBadInput;
+    }
     warnIfInaccurate(*model);
     const StopSignals stop;
     long long sampled = 0;
@@ -200,11 +214,15 @@ int runSimulation(const RunOptions& options) {
         const long long steps = options.steps.value_or(planned > 0 ? planned : kDefaultSteps);
         const long long every = options.every.value_or(planned > 0 ? 1 : kDefaultEvery);
         SeriesCsv series(options.out, model->seriesColumns());
+        SurfaceCsv surface(options.surface, model->seriesColumns());
         Progress progress(steps, !options.quiet);
         // The health is checked before each row is kept, so no row of an exploded state is written.
         auto sample = [&] {
             model->checkHealthNow();
-            if (!model->failure()) series.append(model->sampleSeries());
+            if (model->failure()) return;
+            const std::vector<double> row = model->sampleSeries();
+            series.append(row);
+            surface.append(*model, row);
         };
         sample();
         for (long long s = 1; s <= steps && !model->failure() && !stop.caught(); ++s) {
@@ -216,9 +234,11 @@ int runSimulation(const RunOptions& options) {
         progress.finish();
         sampled = series.rows();
         series.close();
+        surface.close();
         // Everything measured so far is kept even when the model failed or the run was stopped.
         writeText(options.histogram, [&] { return histogramsCsv(*model); });
         writeText(options.dumpFinal, [&] { return particlesCsv(*model); });
+        writeText(options.fields, [&] { return fieldsCsv(*model); });
         writeText(options.snapshot,
                   [&] { return serializeSnapshot(takeSnapshot(*model), model->paramSpecs()); });
     } catch (const FileError& e) {

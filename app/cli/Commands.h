@@ -28,6 +28,8 @@ struct RunOptions {
     std::optional<long long> every; // sample observables every this many steps; default: 1 for a run with
                                     // a planned length (as the DSMC seed prints every step), else 100
     std::string out, histogram, dumpInitial, dumpFinal;
+    std::string fields;           // sampled fields at the end (a scene with SampledFields: the wind tunnel)
+    std::string surface;          // step,time,drag,lift per sample (the wind tunnel's body forces)
     std::string snapshot;         // the full state at the end (also when stopped), to continue from
     std::string backend = "auto"; // cpu, gl or auto
     bool quiet = false;

@@ -1,8 +1,9 @@
 // What a CLI run needs to lose nothing: SIGINT and SIGTERM stop it between steps, and the time series
-// goes to its file row by row as it is sampled.
+// (and the wind tunnel's body forces) go to their files row by row as they are sampled.
 #pragma once
 
 #include "common/AtomicFile.h"
+#include "common/Model.h"
 
 #include <memory>
 #include <string>
@@ -36,6 +37,26 @@ public:
 private:
     std::unique_ptr<StreamedFile> file_;
     long long rows_ = 0;
+};
+
+// Why --fields (fieldsAsked) or --surface (surfaceAsked) cannot be had from this model: it samples no
+// fields, or its series has no drag and lift columns. Empty when they can; the run refuses before it
+// starts otherwise (bad input).
+std::string sampledOutputsRefusal(const Model& model, bool fieldsAsked, bool surfaceAsked);
+
+// The forces on the bodies, `step,time,drag,lift` [N per m of depth], one row per sample of the series:
+// the model's step and time, and the drag and lift picked from the series row; streamed like it.
+// Without a path nothing is written.
+class SurfaceCsv {
+public:
+    SurfaceCsv(const std::string& path, const std::vector<std::string>& seriesColumns);
+    void append(const Model& model, const std::vector<double>& seriesRow);
+    void close() { csv_.close(); }
+
+private:
+    std::vector<std::size_t> picked_; // where drag and lift are in a series row (first: the columns are
+                                      // checked before the file is opened)
+    SeriesCsv csv_;
 };
 
 } // namespace pl::cli

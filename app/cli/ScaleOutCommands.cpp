@@ -1,5 +1,5 @@
-// export lammps, import lammps and run-lammps: the deck comes from core/scaleout, LAMMPS runs as a child
-// process (core/scaleout/LammpsRun.h) whose thermo lines become a progress line.
+// export lammps / sparta, import lammps / sparta and run-lammps: the deck comes from core/scaleout, LAMMPS
+// runs as a child process (core/scaleout/LammpsRun.h) whose thermo lines become a progress line.
 #include "ScaleOutCommands.h"
 
 #include "Commands.h"
@@ -13,6 +13,7 @@
 #include "scaleout/SpartaDeck.h"
 #include "scaleout/SpartaImport.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -56,10 +57,11 @@ template <class M> std::unique_ptr<M> modelFor(const ScaleOutOptions& options, c
     std::optional<StateRecord> state;
     const Preset preset = loadExperiment(options, state);
     if (preset.model != kind)
-        throw std::invalid_argument("export " + std::string(kind == "gas" ? "lammps" : "sparta") +
-                                    " needs a " + kind + " experiment, not " + preset.model +
-                                    (preset.model == "dsmc" ? " (use export sparta)" : "") +
-                                    (preset.model == "gas" ? " (use export lammps)" : ""));
+        throw std::invalid_argument(
+            "export " + std::string(kind == "gas" ? "lammps needs a gas" : "sparta needs a dsmc or tunnel") +
+            " experiment, not " + preset.model +
+            (preset.model == "dsmc" || preset.model == "tunnel" ? " (use export sparta)" : "") +
+            (preset.model == "gas" ? " (use export lammps)" : ""));
     auto model = std::make_unique<M>();
     model->reset(preset);
     if (state) model->restoreState(*state);
@@ -129,13 +131,26 @@ int exportLammps(const ScaleOutOptions& options) {
 int exportSparta(const ScaleOutOptions& options) {
     scaleout::Deck deck;
     try {
-        const auto model = modelFor<DsmcModel>(options, "dsmc");
-        const DsmcModel& cell = *model;
-        const long long planned = cell.plannedSteps();
-        scaleout::SpartaExportOptions deckOptions;
-        deckOptions.steps = options.steps.value_or(planned > 0 ? planned : kDefaultSteps);
-        deckOptions.every = options.every.value_or(planned > 0 ? 1 : kDefaultEvery);
-        deck = scaleout::spartaDeck(cell, deckOptions);
+        // The run's length and output: the preset's planned run written every step, else the defaults;
+        // a tunnel without a planned run gets at least twice its sample_start, so the fields window
+        // holds as many steps as the settling before it.
+        auto deckOptions = [&options](long long planned, long long leastSteps) {
+            scaleout::SpartaExportOptions chosen;
+            chosen.every = options.every.value_or(planned > 0 ? 1 : kDefaultEvery);
+            const long long unplanned = std::max(kDefaultSteps, leastSteps);
+            chosen.steps = options.steps.value_or(
+                planned > 0 ? planned : (unplanned + chosen.every - 1) / chosen.every * chosen.every);
+            return chosen;
+        };
+        std::optional<StateRecord> state;
+        if (loadExperiment(options, state).model == "tunnel") {
+            const auto tunnel = modelFor<TunnelModel>(options, "tunnel");
+            deck = scaleout::spartaDeck(
+                *tunnel, deckOptions(tunnel->plannedSteps(), 2 * tunnel->parameters().sampleStart));
+        } else {
+            const auto cell = modelFor<DsmcModel>(options, "dsmc");
+            deck = scaleout::spartaDeck(*cell, deckOptions(cell->plannedSteps(), 0));
+        }
     } catch (const std::exception& e) {
         return fail(kBadInput, e.what());
     }
@@ -225,7 +240,8 @@ ScaleOutCli::ScaleOutCli(CLI::App& app) {
 
     exportSparta_ = exportCmd->add_subcommand(
         "sparta",
-        "The DSMC cell as a SPARTA deck: in.sparta, species and VSS files, the exact initial velocities");
+        "The DSMC cell or the wind tunnel as a SPARTA deck: in.sparta, species and VSS files, the cell's "
+        "exact initial velocities or the tunnel's bodies, grid fields and body forces");
     addPresetOptions(exportSparta_);
     exportSparta_->add_option("--out", o.dir, "Folder of the deck (created if missing)")
         ->required()

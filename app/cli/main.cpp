@@ -55,6 +55,16 @@ int main(int argc, char** argv) {
     runCmd->add_option("--dump-final", run.dumpFinal, "Final particles CSV (id,species,x,y,vx,vy)")
         ->check(fileName());
     runCmd
+        ->add_option("--fields", run.fields,
+                     "Wind tunnel: the sampled fields at the end (also when stopped), one row per cell: "
+                     "i,j,x,y,n,ux,uy,T,Tx,Ty,mach (SI)")
+        ->check(fileName());
+    runCmd
+        ->add_option(
+            "--surface", run.surface,
+            "Wind tunnel: the force on the bodies per sample, step,time,drag,lift [N per m of depth]")
+        ->check(fileName());
+    runCmd
         ->add_option("--snapshot", run.snapshot,
                      "Full state at the end (also when stopped); `run FILE` continues from it exactly")
         ->check(fileName());

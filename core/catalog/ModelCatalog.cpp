@@ -9,15 +9,17 @@
 namespace pl {
 
 // The registrations, each defined in its kind's folder: a new kind adds one line to each list.
-const ModelDescriptor& gasRegistration();   // md/MdRegistration.cpp
-const ModelDescriptor& dsmcRegistration();  // dsmc/DsmcRegistration.cpp
-const ModelDescriptor& fluidRegistration(); // pbf/PbfRegistration.cpp
+const ModelDescriptor& gasRegistration();    // md/MdRegistration.cpp
+const ModelDescriptor& dsmcRegistration();   // dsmc/DsmcRegistration.cpp
+const ModelDescriptor& fluidRegistration();  // pbf/PbfRegistration.cpp
+const ModelDescriptor& tunnelRegistration(); // tunnel/TunnelRegistration.cpp
 
 const std::vector<std::reference_wrapper<const ModelDescriptor>>& modelCatalog() {
     static const std::vector<std::reference_wrapper<const ModelDescriptor>> list{
         gasRegistration(),
         dsmcRegistration(),
         fluidRegistration(),
+        tunnelRegistration(),
     };
     return list;
 }

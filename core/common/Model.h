@@ -4,6 +4,7 @@
 #include "Histogram.h"
 #include "ParamSpec.h"
 #include "Preset.h"
+#include "SampledFields.h"
 #include "SceneTools.h"
 #include "SceneView.h"
 #include "StateRecord.h"
@@ -110,6 +111,8 @@ public:
     virtual SceneView sceneViewSharingGpu() const { return sceneView(); }
     // The mouse tools' entry points; nullptr when the scene has nothing to drag or spawn.
     virtual SceneTools* tools() { return nullptr; }
+    // Fields sampled on a grid of cells (common/SampledFields.h); nullptr when the model has none.
+    virtual const SampledFields* sampledFields() const { return nullptr; }
 };
 
 } // namespace pl

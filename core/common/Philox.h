@@ -44,6 +44,10 @@ enum class RngPurpose : std::uint32_t {
     Shuffle = 5,
     Collision = 6,
     WallJitter = 7,
+    TunnelFill = 8,       // the wind tunnel's initial gas and spawned rectangles
+    TunnelInflow = 9,     // molecules entering through an inflow side
+    TunnelSurface = 10,   // diffuse re-emission from a side or a body
+    TunnelCollision = 11, // NTC pair selection and scattering per cell
 };
 
 // Four independent words for (seed, purpose, subject, sequence). subject is usually a particle id and

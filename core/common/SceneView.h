@@ -30,6 +30,18 @@ struct GpuParticles {
     std::size_t count = 0;
 };
 
+// A sampled field drawn under the particles as a colour map over the world rectangle: cell (i, j) of
+// nx × ny, row-major (j·nx + i), value in [0, 1] on the colour scale, NaN where nothing was sampled
+// (drawn as background).
+struct SceneFieldImage {
+    int nx = 0, ny = 0;
+    double left = 0, bottom = 0, right = 1, top = 1; // [L]
+    std::vector<float> value;
+    ColourMap colours = ColourMap::Thermal;
+    std::string label;               // legend title with unit, e.g. "Mach number"
+    double minimum = 0, maximum = 1; // physical values at the ends of the colour scale
+};
+
 struct SceneView {
     // World rectangle shown [L]; the box outline when drawBox.
     double left = -1, bottom = -1, right = 1, top = 1;
@@ -45,10 +57,12 @@ struct SceneView {
     std::vector<std::string> categories; // legend entries for ColourMap::Category
 
     std::vector<Obstacle> obstacles;
-    std::optional<double> pistonX;   // a vertical wall from bottom to top at this x
-    std::string hint;                // faint instruction across the view (e.g. while a tank is empty)
-    bool dragPours = false;          // with the Drag tool, dragging empty space spawns (the fluid seed)
-    std::optional<GpuParticles> gpu; // set instead of x, y, radius, value by sceneViewSharingGpu()
+    std::optional<double> pistonX;        // a vertical wall from bottom to top at this x
+    std::string hint;                     // faint instruction across the view (e.g. while a tank is empty)
+    bool dragPours = false;               // with the Drag tool, dragging empty space spawns (the fluid seed)
+    std::optional<GpuParticles> gpu;      // set instead of x, y, radius, value by sceneViewSharingGpu()
+    std::optional<SceneFieldImage> field; // a colour map under the particles (the wind tunnel's fields)
+    bool drawParticles = true;            // false while a field hides them
 
     std::size_t size() const { return x.size(); }
 };

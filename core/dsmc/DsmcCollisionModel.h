@@ -17,6 +17,11 @@ struct CollisionModel {
     double omega = 0.75;
 
     static CollisionModel fromParams(const DsmcParams& p);
+    // The same prefactors from the cross-section parameters alone (the DSMC cell and the wind tunnel
+    // share them): massKg the molecular mass.
+    static CollisionModel fromCrossSection(DsmcCrossSection crossSection, double diameter, double vhsDiameter,
+                                           double vhsTref, double vhsOmega, double maxwellSigmaCr,
+                                           double massKg);
 
     // σ c_r [m³/s]. The common exponents get exact fast paths; pow only for a general VHS ω.
     double sigmaCr(double cr) const {

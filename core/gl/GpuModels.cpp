@@ -3,6 +3,7 @@
 
 #include "MdModelGL.h"
 #include "PbfModelGL.h"
+#include "TunnelModelGL.h"
 
 namespace pl::gl {
 
@@ -18,6 +19,7 @@ const std::vector<GpuModel>& gpuModels() {
     static const std::vector<GpuModel> list{
         {"gas", &buildOnGpu<MdModelGL>},
         {"fluid", &buildOnGpu<PbfModelGL>},
+        {"tunnel", &buildOnGpu<TunnelModelGL>},
     };
     return list;
 }

@@ -4,6 +4,9 @@
 #include "GlProgram.h"
 #include "MdModelGL.h"
 #include "PbfModelGL.h"
+#include "TunnelModelGL.h"
+#include "catalog/ModelCatalog.h"
+#include "tunnel/TunnelModel.h"
 
 #include <algorithm>
 #include <chrono>
@@ -15,6 +18,7 @@ namespace {
 using Clock = std::chrono::steady_clock;
 constexpr double kSettleBatchSeconds = 0.1; // [s] one batch of the settling loop
 constexpr double kSettledTolerance = 0.03;  // two batches within 3 % of each other: settled
+constexpr double kFluidRows = 64.0;         // the tallest block of the scaled fluid, in particles
 
 double median(std::vector<double> v) {
     std::sort(v.begin(), v.end());
@@ -62,7 +66,12 @@ Preset scaledFluidPreset(std::size_t n) {
     p.model = "fluid";
     p.seed = 20240501;
     const double h = 0.8, spacing = 0.5 * h;
-    const double side = std::ceil(std::sqrt(static_cast<double>(n))) * spacing; // the block's edge
+    // A block at most kFluidRows particles tall, as wide as n needs: five Jacobi iterations hold a column
+    // about that tall at its rest density, while a square block of 1M particles (1024 rows) collapses into
+    // a layer compressed by 30 % with cells of 300+ particles, whose cost grows 4× as it piles up
+    // (BENCHMARKS.md, "GPU backends", "Against the goals").
+    const double rows = std::min(std::ceil(std::sqrt(static_cast<double>(n))), kFluidRows);
+    const double width = std::ceil(static_cast<double>(n) / rows) * spacing, height = rows * spacing;
     p.params = {{"kernel", std::string("2d")},
                 {"self_density", true},
                 {"rest_density_source", std::string("spawn-lattice")},
@@ -72,13 +81,27 @@ Preset scaledFluidPreset(std::size_t n) {
                 {"particle_radius", 0.2},
                 {"iterations", 5.0},
                 {"dt", 0.01},
-                {"box_width", 2.0 * side + 1.0},
-                {"box_height", 1.5 * side + 1.0},
+                {"box_width", 2.0 * width + 1.0},
+                {"box_height", 1.5 * height + 1.0},
                 {"fill_x0", 0.0},
                 {"fill_y0", 0.0},
-                {"fill_x1", side},
-                {"fill_y1", side},
+                {"fill_x1", width},
+                {"fill_y1", height},
                 {"max_particles", static_cast<double>(2 * n + 1024)}};
+    return p;
+}
+
+Preset scaledTunnelPreset(std::size_t n) {
+    Preset p = loadPreset("dsmc-cylinder");
+    TunnelParams params;
+    params = withValues(params, TunnelParams::fields(), p.params);
+    const double preset = static_cast<double>(TunnelModel::initialFillCount(params, p.obstacles));
+    const double ratio = static_cast<double>(std::max<std::size_t>(n, 1)) / std::max(preset, 1.0);
+    const double refine = std::sqrt(ratio);
+    p.params["fn"] = params.fn / ratio;
+    p.params["cells_x"] = std::max(1.0, std::round(static_cast<double>(params.cellsX) * refine));
+    p.params["cells_y"] = std::max(1.0, std::round(static_cast<double>(params.cellsY) * refine));
+    p.params["run_steps"] = 0.0;
     return p;
 }
 
@@ -104,6 +127,8 @@ BenchPoint timeModel(Model& model, const std::string& scene, const std::string& 
     }
     point.settleSeconds = std::chrono::duration<double>(Clock::now() - settleStart).count();
     const int steps = std::max(settings.minSteps, static_cast<int>(settings.targetSeconds / perStep));
+    // The count may change while stepping (the tunnel fills its shock layer): the mean over the repeats.
+    const std::size_t countBefore = model.particleCount();
     std::vector<double> rates, issue;
     for (int r = 0; r < settings.repeats; ++r) {
         if (cancel && cancel()) return point;
@@ -112,6 +137,7 @@ BenchPoint timeModel(Model& model, const std::string& scene, const std::string& 
         point.repeatMicrosecondsPerStep.push_back(1e6 * t.seconds / steps);
         issue.push_back(1e6 * t.issueSeconds / steps);
     }
+    point.particles = (countBefore + model.particleCount()) / 2;
     const double stepsPerSecond = median(rates);
     point.issueMicrosecondsPerStep = median(issue);
     point.particleStepsPerSecond = stepsPerSecond * static_cast<double>(point.particles);
@@ -119,6 +145,8 @@ BenchPoint timeModel(Model& model, const std::string& scene, const std::string& 
     if (auto* gas = dynamic_cast<MdModelGL*>(&model)) point.dispatchesPerStep = gas->dispatchesLastStep();
     if (auto* fluid = dynamic_cast<PbfModelGL*>(&model))
         point.dispatchesPerStep = fluid->dispatchesLastStep();
+    if (auto* tunnel = dynamic_cast<TunnelModelGL*>(&model))
+        point.dispatchesPerStep = tunnel->dispatchesLastStep();
     return point;
 }
 

@@ -12,7 +12,7 @@
 namespace pl::gl {
 
 struct BenchPoint {
-    std::string scene;   // "gas" or "fluid"
+    std::string scene;   // "gas", "fluid" or "tunnel"
     std::string backend; // "cpu" or "gl"
     std::size_t particles = 0;
     double particleStepsPerSecond = 0; // median over repeats
@@ -29,9 +29,15 @@ struct BenchPoint {
 // the box grows as √(n / 4096).
 Preset scaledGasPreset(std::size_t n);
 
-// The dam break's fluid (2D kernels, ε = 1, h = 0.8, spacing 0.4) with about n particles in one square
-// block in a tank twice as wide and 1.5 times as high, 5 iterations.
+// The dam break's fluid (2D kernels, ε = 1, h = 0.8, spacing 0.4) with about n particles in one block at
+// most 64 rows tall (square below 4096 particles) in a tank twice as wide and 1.5 times as high,
+// 5 iterations: a column five iterations hold at its rest density at every n.
 Preset scaledFluidPreset(std::size_t n);
+
+// The `dsmc-cylinder` preset (hypersonic argon past a cylinder, collisions on) scaled to about n
+// simulated molecules: F_N shrinks and the cell grid refines by √ of the ratio along each side, so the
+// flow (density, Kn, Δt) and the molecules per cell stay the preset's and only the resolution grows.
+Preset scaledTunnelPreset(std::size_t n);
 
 // Steps per repeat that take about targetSeconds at a guessed rate, at least minSteps.
 struct BenchSettings {

@@ -37,25 +37,11 @@ std::string particleFile(const DsmcModel& cell, double side) {
     return out.str();
 }
 
-std::string modelName(CollisionModel::Kind kind) {
-    switch (kind) {
-    case CollisionModel::Kind::Seed:
-        return "the seed's sigma = 1e-18 c_r^-1/2 (VHS, omega = 3/4)";
-    case CollisionModel::Kind::HardSphere:
-        return "hard spheres (VHS, omega = 1/2)";
-    case CollisionModel::Kind::Vhs:
-        return "VHS";
-    case CollisionModel::Kind::Maxwell:
-        return "Maxwell molecules (VHS, omega = 1)";
-    }
-    return "";
-}
-
 std::vector<std::string> mappingNotes(const DsmcModel& cell, const VssParameters& vss) {
     const DsmcParams& p = cell.parameters();
     std::ostringstream cross;
     cross.precision(10);
-    cross << "exact: the cross-section, " << modelName(cell.collisionModel().kind)
+    cross << "exact: the cross-section, " << crossSectionName(cell.collisionModel().kind)
           << ", as collide vss with d_ref = " << vss.diameter << " m, omega = " << vss.omega
           << ", T_ref = " << vss.tref << " K, alpha = 1";
     return {
@@ -71,21 +57,49 @@ std::vector<std::string> mappingNotes(const DsmcModel& cell, const VssParameters
 
 } // namespace
 
-VssParameters vssParameters(const DsmcParams& params, const CollisionModel& model) {
+namespace {
+
+// One mapping for both scenes: their gases have the same cross-section parameters.
+VssParameters vssFor(const CollisionModel& model, double hardSphereDiameter, double vhsDiameter, double tref,
+                     double mass) {
     VssParameters vss;
     vss.omega = model.omega;
-    vss.tref = params.vhsTref;
+    vss.tref = tref;
     if (model.kind == CollisionModel::Kind::HardSphere) {
-        vss.diameter = params.diameter;
+        vss.diameter = hardSphereDiameter;
     } else if (model.kind == CollisionModel::Kind::Vhs) {
-        vss.diameter = params.vhsDiameter;
+        vss.diameter = vhsDiameter;
     } else {
         // A c_r^(2−2ω) = π d² (4kT_ref/m)^(ω−½) c_r^(2−2ω) / Γ(5/2−ω), solved for d (m_r = m/2).
-        const double thermal = 4.0 * kBoltzmann * params.vhsTref / params.mass();
+        const double thermal = 4.0 * kBoltzmann * tref / mass;
         vss.diameter = std::sqrt(model.prefactor * std::tgamma(2.5 - model.omega) /
                                  (std::numbers::pi * std::pow(thermal, model.omega - 0.5)));
     }
     return vss;
+}
+
+} // namespace
+
+std::string crossSectionName(CollisionModel::Kind kind) {
+    switch (kind) {
+    case CollisionModel::Kind::Seed:
+        return "the seed's sigma = 1e-18 c_r^-1/2 (VHS, omega = 3/4)";
+    case CollisionModel::Kind::HardSphere:
+        return "hard spheres (VHS, omega = 1/2)";
+    case CollisionModel::Kind::Vhs:
+        return "VHS";
+    case CollisionModel::Kind::Maxwell:
+        return "Maxwell molecules (VHS, omega = 1)";
+    }
+    return "";
+}
+
+VssParameters vssParameters(const DsmcParams& params, const CollisionModel& model) {
+    return vssFor(model, params.diameter, params.vhsDiameter, params.vhsTref, params.mass());
+}
+
+VssParameters vssParameters(const TunnelParams& params, const CollisionModel& model) {
+    return vssFor(model, params.diameter, params.vhsDiameter, params.vhsTref, params.mass());
 }
 
 Deck spartaDeck(const DsmcModel& cell, const SpartaExportOptions& options) {

@@ -1180,6 +1180,310 @@ Wirkt nach „Zurücksetzen“.</translation>
         <source>three Verlet steps of θh, (1−2θ)h, θh; symplectic, time-reversible</source>
         <translation>drei Verlet-Schritte von θh, (1−2θ)h, θh; symplektisch, zeitumkehrbar</translation>
     </message>
+    <message>
+        <source>Bodies and piston</source>
+        <translation>Körper und Kolben</translation>
+    </message>
+    <message>
+        <source>Body surface</source>
+        <translation>Körperoberfläche</translation>
+    </message>
+    <message>
+        <source>Body temperature</source>
+        <translation>Körpertemperatur</translation>
+    </message>
+    <message>
+        <source>Bottom side</source>
+        <translation>Untere Seite</translation>
+    </message>
+    <message>
+        <source>Bottom wall speed</source>
+        <translation>Geschwindigkeit der unteren Wand</translation>
+    </message>
+    <message>
+        <source>Cells along x</source>
+        <translation>Zellen entlang x</translation>
+    </message>
+    <message>
+        <source>Cells along y</source>
+        <translation>Zellen entlang y</translation>
+    </message>
+    <message>
+        <source>Collision and sampling cells along x; Bird&apos;s guideline is a cell width below λ/2.</source>
+        <translation>Stoß- und Mittelungszellen entlang x; nach Bird ist eine Zellbreite unter λ/2 angemessen.</translation>
+    </message>
+    <message>
+        <source>Collision and sampling cells along y.</source>
+        <translation>Stoß- und Mittelungszellen entlang y.</translation>
+    </message>
+    <message>
+        <source>Domain and method</source>
+        <translation>Gebiet und Verfahren</translation>
+    </message>
+    <message>
+        <source>Fastest a dragged body or the piston moves.</source>
+        <translation>Höchste Geschwindigkeit, mit der sich ein gezogener Körper oder der Kolben bewegt.</translation>
+    </message>
+    <message>
+        <source>Flow speed</source>
+        <translation>Strömungsgeschwindigkeit</translation>
+    </message>
+    <message>
+        <source>Flow speed [m/s]</source>
+        <translation>Strömungsgeschwindigkeit [m/s]</translation>
+    </message>
+    <message>
+        <source>Forces on the bodies</source>
+        <translation>Kräfte auf die Körper</translation>
+    </message>
+    <message>
+        <source>Free stream</source>
+        <translation>Freie Anströmung</translation>
+    </message>
+    <message>
+        <source>Gas</source>
+        <translation>Gas</translation>
+    </message>
+    <message>
+        <source>Height</source>
+        <translation>Höhe</translation>
+    </message>
+    <message>
+        <source>Height of the domain (y); the depth is 1 m.</source>
+        <translation>Höhe des Gebiets (y); die Tiefe ist 1 m.</translation>
+    </message>
+    <message>
+        <source>Initial gas</source>
+        <translation>Anfangsgas</translation>
+    </message>
+    <message>
+        <source>Keep it below a quarter of the mean collision time and the stream&apos;s cell transit time.</source>
+        <translation>Unter einem Viertel der mittleren Stoßzeit und der Zeit, in der die Strömung eine Zelle durchquert, halten.</translation>
+    </message>
+    <message>
+        <source>Left side</source>
+        <translation>Linke Seite</translation>
+    </message>
+    <message>
+        <source>Length of the domain along the stream (x).</source>
+        <translation>Länge des Gebiets in Strömungsrichtung (x).</translation>
+    </message>
+    <message>
+        <source>Mach number</source>
+        <translation>Machzahl</translation>
+    </message>
+    <message>
+        <source>Mass of one molecule; argon is 39.948.</source>
+        <translation>Masse eines Moleküls; Argon hat 39,948.</translation>
+    </message>
+    <message>
+        <source>Molecules</source>
+        <translation>Moleküle</translation>
+    </message>
+    <message>
+        <source>Number density</source>
+        <translation>Teilchendichte</translation>
+    </message>
+    <message>
+        <source>Number density [m⁻³]</source>
+        <translation>Teilchendichte [m⁻³]</translation>
+    </message>
+    <message>
+        <source>Number density of the free stream.</source>
+        <translation>Teilchendichte der freien Anströmung.</translation>
+    </message>
+    <message>
+        <source>Rarefied flow (DSMC)</source>
+        <translation>Verdünnte Strömung (DSMC)</translation>
+    </message>
+    <message>
+        <source>Real molecules (per m of depth) each simulated particle stands for; aim for ≥ 5 particles per free-stream cell.</source>
+        <translation>Reale Moleküle (je m Tiefe), für die ein simuliertes Teilchen steht; anzustreben sind ≥ 5 Teilchen je Zelle der freien Anströmung.</translation>
+    </message>
+    <message>
+        <source>Right side</source>
+        <translation>Rechte Seite</translation>
+    </message>
+    <message>
+        <source>Sampling and view</source>
+        <translation>Mittelung und Ansicht</translation>
+    </message>
+    <message>
+        <source>Sampling starts after</source>
+        <translation>Mittelung beginnt nach</translation>
+    </message>
+    <message>
+        <source>Sides</source>
+        <translation>Seiten</translation>
+    </message>
+    <message>
+        <source>Speed along +x of a diffuse bottom side (Couette flow).</source>
+        <translation>Geschwindigkeit einer diffusen unteren Seite entlang +x (Couette-Strömung).</translation>
+    </message>
+    <message>
+        <source>Speed along +x of a diffuse top side.</source>
+        <translation>Geschwindigkeit einer diffusen oberen Seite entlang +x.</translation>
+    </message>
+    <message>
+        <source>Speed of the driven piston; &gt; 0 at the start drives it into the gas from t = 0.</source>
+        <translation>Geschwindigkeit des angetriebenen Kolbens; &gt; 0 beim Start treibt ihn ab t = 0 ins Gas.</translation>
+    </message>
+    <message>
+        <source>Steps after a reset or an edit before the fields are averaged.</source>
+        <translation>Schritte nach einem Zurücksetzen oder einer Änderung, bevor die Felder gemittelt werden.</translation>
+    </message>
+    <message>
+        <source>Stream speed</source>
+        <translation>Anströmgeschwindigkeit</translation>
+    </message>
+    <message>
+        <source>Stream temperature</source>
+        <translation>Anströmtemperatur</translation>
+    </message>
+    <message>
+        <source>Temperature T_x</source>
+        <translation>Temperatur T_x</translation>
+    </message>
+    <message>
+        <source>Temperature T_y</source>
+        <translation>Temperatur T_y</translation>
+    </message>
+    <message>
+        <source>Temperature [K]</source>
+        <translation>Temperatur [K]</translation>
+    </message>
+    <message>
+        <source>Temperature of diffuse bodies.</source>
+        <translation>Temperatur diffuser Körper.</translation>
+    </message>
+    <message>
+        <source>Temperature of the diffuse sides.</source>
+        <translation>Temperatur der diffusen Seiten.</translation>
+    </message>
+    <message>
+        <source>Temperature of the free stream.</source>
+        <translation>Temperatur der freien Anströmung.</translation>
+    </message>
+    <message>
+        <source>The left side becomes a specular piston that can be driven to the right (a shock tube).</source>
+        <translation>Die linke Seite wird zu einem spiegelnden Kolben, der nach rechts getrieben werden kann (ein Stoßrohr).</translation>
+    </message>
+    <message>
+        <source>The run stops after this many steps; 0 runs on.</source>
+        <translation>Der Lauf hält nach so vielen Schritten an; 0 läuft weiter.</translation>
+    </message>
+    <message>
+        <source>Tool speed</source>
+        <translation>Werkzeuggeschwindigkeit</translation>
+    </message>
+    <message>
+        <source>Top side</source>
+        <translation>Obere Seite</translation>
+    </message>
+    <message>
+        <source>Top wall speed</source>
+        <translation>Geschwindigkeit der oberen Wand</translation>
+    </message>
+    <message>
+        <source>VHS reference diameter (argon: 4.17e-10).</source>
+        <translation>VHS-Referenzdurchmesser (Argon: 4.17e-10).</translation>
+    </message>
+    <message>
+        <source>Velocity of the free stream along +x.</source>
+        <translation>Geschwindigkeit der freien Anströmung entlang +x.</translation>
+    </message>
+    <message>
+        <source>Velocity u_x</source>
+        <translation>Geschwindigkeit u_x</translation>
+    </message>
+    <message>
+        <source>Velocity u_y</source>
+        <translation>Geschwindigkeit u_y</translation>
+    </message>
+    <message>
+        <source>View</source>
+        <translation>Ansicht</translation>
+    </message>
+    <message>
+        <source>Viscosity index: 0.5 hard sphere, 1 Maxwell, argon 0.81.</source>
+        <translation>Viskositätsindex: 0,5 harte Kugeln, 1 Maxwell, Argon 0,81.</translation>
+    </message>
+    <message>
+        <source>Wall temperature</source>
+        <translation>Wandtemperatur</translation>
+    </message>
+    <message>
+        <source>Width</source>
+        <translation>Breite</translation>
+    </message>
+    <message>
+        <source>all molecules</source>
+        <translation>alle Moleküle</translation>
+    </message>
+    <message>
+        <source>collisions</source>
+        <translation>Stöße</translation>
+    </message>
+    <message>
+        <source>collisions per step</source>
+        <translation>Stöße je Schritt</translation>
+    </message>
+    <message>
+        <source>diffuse: molecules leave at the body temperature; specular: they are mirrored.</source>
+        <translation>diffuse: Moleküle verlassen den Körper mit seiner Temperatur; specular: sie werden gespiegelt.</translation>
+    </message>
+    <message>
+        <source>drag</source>
+        <translation>Widerstand</translation>
+    </message>
+    <message>
+        <source>drag [N/m]</source>
+        <translation>Widerstand [N/m]</translation>
+    </message>
+    <message>
+        <source>drag, window mean</source>
+        <translation>Widerstand, Fenstermittel</translation>
+    </message>
+    <message>
+        <source>empty: vacuum; stream: the free stream everywhere; rest: the free-stream gas at rest.</source>
+        <translation>empty: Vakuum; stream: überall die freie Anströmung; rest: das Gas der Anströmung in Ruhe.</translation>
+    </message>
+    <message>
+        <source>inflow: the free stream enters; outflow: vacuum; specular: a mirror; diffuse: a wall at the wall temperature; periodic: wraps to the opposite side.</source>
+        <translation>inflow: die freie Anströmung tritt ein; outflow: Vakuum; specular: ein Spiegel; diffuse: eine Wand mit der Wandtemperatur; periodic: weiter auf der Gegenseite.</translation>
+    </message>
+    <message>
+        <source>lift</source>
+        <translation>Auftrieb</translation>
+    </message>
+    <message>
+        <source>lift [N/m]</source>
+        <translation>Auftrieb [N/m]</translation>
+    </message>
+    <message>
+        <source>lift, window mean</source>
+        <translation>Auftrieb, Fenstermittel</translation>
+    </message>
+    <message>
+        <source>molecules</source>
+        <translation>Moleküle</translation>
+    </message>
+    <message>
+        <source>m⁻³</source>
+        <translation>m⁻³</translation>
+    </message>
+    <message>
+        <source>particles, or a sampled field as a colour map.</source>
+        <translation>particles, oder ein gemitteltes Feld als Farbkarte.</translation>
+    </message>
+    <message>
+        <source>seed: σ = 1e-18 c_r^-1/2 m²; hard-sphere: σ = π d²; vhs: variable hard sphere (d_ref, T_ref, ω); maxwell: σ c_r constant.</source>
+        <translation>seed: σ = 1e-18 c_r^-1/2 m²; hard-sphere: σ = π d²; vhs: variable harte Kugeln (d_ref, T_ref, ω); maxwell: σ c_r konstant.</translation>
+    </message>
+    <message>
+        <source>simulated molecules</source>
+        <translation>simulierte Moleküle</translation>
+    </message>
 </context>
 <context>
     <name>pl::ui::Autosave</name>
@@ -1735,6 +2039,10 @@ Wirkt nach „Zurücksetzen“.</translation>
         <source>Pour where you like: drag a rectangle in the tank to fill it with fluid</source>
         <translation>Gießen, wo Sie möchten: ein Rechteck im Becken aufziehen, um es mit Flüssigkeit zu füllen</translation>
     </message>
+    <message>
+        <source>Show</source>
+        <translation>Anzeige</translation>
+    </message>
 </context>
 <context>
     <name>pl::ui::MainWindow</name>
@@ -2103,10 +2411,6 @@ Wirkt nach „Zurücksetzen“.</translation>
         <translation>Vollbild: die Simulationsansicht, ein Diagramm, große Anzeigen und die Bedienelemente einer Unterrichtsstunde (Esc beendet)</translation>
     </message>
     <message>
-        <source>Drag obstacles and the piston; drag empty space to pan (in the fluid: to pour)</source>
-        <translation>Hindernisse und den Kolben ziehen; freie Fläche ziehen verschiebt die Ansicht (in der Flüssigkeit: gießt ein)</translation>
-    </message>
-    <message>
         <source>This experiment has no piston: tick “Piston” in Parameters → Walls and fields.</source>
         <translation>Dieses Experiment hat keinen Kolben: „Kolben“ unter Parameter → Wände und Felder ankreuzen.</translation>
     </message>
@@ -2252,6 +2556,22 @@ Wirkt nach „Zurücksetzen“.</translation>
         <translation>LAMMPS ist fehlgeschlagen (Exit-Status %1) in %2; seine letzte Ausgabe:
 %3</translation>
     </message>
+    <message>
+        <source>Profile</source>
+        <translation>Profil</translation>
+    </message>
+    <message>
+        <source>Drag obstacles and the piston; drag empty space to pan (in the fluid: to pour; where fields are sampled: to read the local values)</source>
+        <translation>Hindernisse und den Kolben ziehen; freie Fläche ziehen verschiebt die Ansicht (in der Flüssigkeit: gießt ein; wo Felder abgetastet werden: zeigt die örtlichen Werte)</translation>
+    </message>
+    <message>
+        <source>Profile line</source>
+        <translation>Profillinie</translation>
+    </message>
+    <message>
+        <source>Drag a line across the flow: the Profile dock plots a sampled field along it</source>
+        <translation>Ziehen Sie eine Linie quer durch die Strömung: das Dock „Profil“ zeigt ein abgetastetes Feld entlang der Linie</translation>
+    </message>
 </context>
 <context>
     <name>pl::ui::MethodsLab</name>
@@ -2349,6 +2669,33 @@ Wirkt nach „Zurücksetzen“.</translation>
     <message>
         <source>Leave (Esc)</source>
         <translation>Verlassen (Esc)</translation>
+    </message>
+</context>
+<context>
+    <name>pl::ui::ProfilePlot</name>
+    <message>
+        <source>The sampled field plotted along the profile line</source>
+        <translation>Das abgetastete Feld, aufgetragen entlang der Profillinie</translation>
+    </message>
+    <message>
+        <source>Field</source>
+        <translation>Feld</translation>
+    </message>
+    <message>
+        <source>distance along the line [m]</source>
+        <translation>Abstand entlang der Linie [m]</translation>
+    </message>
+    <message>
+        <source>Draw a line across the flow with the Profile line tool</source>
+        <translation>Zeichnen Sie mit dem Werkzeug „Profillinie“ eine Linie quer durch die Strömung</translation>
+    </message>
+    <message>
+        <source>This experiment samples no fields</source>
+        <translation>Dieses Experiment tastet keine Felder ab</translation>
+    </message>
+    <message>
+        <source>%1 along the line (%2 m)</source>
+        <translation>%1 entlang der Linie (%2 m)</translation>
     </message>
 </context>
 <context>
@@ -2563,10 +2910,73 @@ Wirkt nach „Zurücksetzen“.</translation>
     </message>
 </context>
 <context>
+    <name>pl::ui::ViewChooser</name>
+    <message>
+        <source>Particles</source>
+        <translation>Teilchen</translation>
+    </message>
+    <message>
+        <source>Number density</source>
+        <translation>Teilchendichte</translation>
+    </message>
+    <message>
+        <source>Flow speed</source>
+        <translation>Strömungsgeschwindigkeit</translation>
+    </message>
+    <message>
+        <source>Temperature</source>
+        <translation>Temperatur</translation>
+    </message>
+    <message>
+        <source>Mach number</source>
+        <translation>Machzahl</translation>
+    </message>
+    <message>
+        <source>Colour &amp;map</source>
+        <translation>&amp;Farbkarte</translation>
+    </message>
+    <message>
+        <source>Show the particles or a sampled field as a colour map</source>
+        <translation>Zeigt die Teilchen oder ein abgetastetes Feld als Farbkarte</translation>
+    </message>
+    <message>
+        <source>Show the particles or a sampled field as a colour map (click the flow to read the local values)</source>
+        <translation>Zeigt die Teilchen oder ein abgetastetes Feld als Farbkarte (ein Klick in die Strömung zeigt die örtlichen Werte)</translation>
+    </message>
+    <message>
+        <source> Show </source>
+        <translation> Anzeige </translation>
+    </message>
+</context>
+<context>
     <name>pl::ui::ViewportCore</name>
     <message>
         <source>This experiment has no piston: tick “Piston” in Parameters → Walls and fields.</source>
         <translation>Dieses Experiment hat keinen Kolben: „Kolben“ unter Parameter → Wände und Felder ankreuzen.</translation>
+    </message>
+    <message>
+        <source>This experiment samples no fields to draw a profile of.</source>
+        <translation>Dieses Experiment tastet keine Felder ab, deren Profil sich zeichnen ließe.</translation>
+    </message>
+    <message>
+        <source>Drag across the flow to draw the profile line.</source>
+        <translation>Ziehen Sie quer durch die Strömung, um die Profillinie zu zeichnen.</translation>
+    </message>
+    <message>
+        <source>At x = %1 m, y = %2 m</source>
+        <translation>Bei x = %1 m, y = %2 m</translation>
+    </message>
+    <message>
+        <source>Outside the sampled domain</source>
+        <translation>Außerhalb des abgetasteten Gebiets</translation>
+    </message>
+    <message>
+        <source>Averaged over the last %1 steps</source>
+        <translation>Gemittelt über die letzten %1 Schritte</translation>
+    </message>
+    <message>
+        <source>Not sampled yet: sampling starts after the start-up steps</source>
+        <translation>Noch nicht abgetastet: die Mittelung beginnt nach den Anlaufschritten</translation>
     </message>
 </context>
 </TS>

@@ -189,6 +189,22 @@ private slots:
         for (const char* name :
              {"in.sparta", "gas.species", "gas.vss", "particles.sparta", "particlelab.json"})
             QVERIFY2(QFile::exists(deck + "/" + name), name);
+        // The wind tunnel exports too (a 2D deck with its bodies); its piston and a run that ends before
+        // the fields window are refused, and the tunnel is no gas.
+        const QString tunnel = dir.filePath("tunnel");
+        const auto cylinder = cli({"export", "sparta", "dsmc-cylinder", "--out", tunnel, "--quiet"});
+        QVERIFY2(cylinder.exitCode == 0, qPrintable(cylinder.err));
+        for (const char* name : {"in.sparta", "gas.species", "gas.vss", "bodies.surf", "particlelab.json"})
+            QVERIFY2(QFile::exists(tunnel + "/" + name), name);
+        const auto piston = cli({"export", "sparta", "dsmc-shock-tube", "--out", deck});
+        QCOMPARE(piston.exitCode, 2);
+        QVERIFY2(piston.err.contains("piston_on"), qPrintable(piston.err));
+        const auto early = cli({"export", "sparta", "dsmc-cylinder", "--steps", "500", "--out", deck});
+        QCOMPARE(early.exitCode, 2);
+        QVERIFY2(early.err.contains("sample_start"), qPrintable(early.err));
+        const auto tunnelToLammps = cli({"export", "lammps", "dsmc-cylinder", "--out", deck});
+        QCOMPARE(tunnelToLammps.exitCode, 2);
+        QVERIFY2(tunnelToLammps.err.contains("use export sparta"), qPrintable(tunnelToLammps.err));
 
         const auto unwritable = cli({"export", "lammps", "gas-seed", "--out", "/proc/particlelab-deck"});
         QCOMPARE(unwritable.exitCode, 4);

@@ -95,6 +95,16 @@ std::vector<std::string> coreDisplayStrings() {
             add(histogram.label);
             add(histogram.axis);
         }
+        // Sampled fields: the probe's and the Profile dock's names, and each field's legend title as the
+        // `view` choice shows it.
+        if (const SampledFields* fields = model->sampledFields()) {
+            for (const FieldChoice& choice : fields->fieldChoices()) add(choice.label);
+            if (const ParamSpec* spec = findSpec(model->paramSpecs(), "view"))
+                for (const std::string& choice : spec->choices) {
+                    model->setParams({{"view", choice}});
+                    if (const auto field = model->sceneView().field) add(field->label);
+                }
+        }
     }
     return {texts.begin(), texts.end()};
 }

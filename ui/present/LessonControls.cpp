@@ -3,6 +3,7 @@
 #include "LessonControls.h"
 
 #include "SimulationController.h"
+#include "ViewChooser.h"
 #include "common/SceneTools.h"
 
 #include <QGridLayout>
@@ -79,11 +80,13 @@ void LessonControls::rebuild() {
     count_ = nullptr;
     pistonSwitch_ = nullptr;
     std::fill(std::begin(pistonButtons_), std::end(pistonButtons_), nullptr);
+    viewButtons_.clear();
     addRunRow();
     if (const Model* model = controller_->model()) {
         if (model->kind() == "gas") addGasControls();
         if (model->kind() == "fluid") addFluidControls();
         if (model->kind() == "dsmc") addDsmcControls();
+        if (model->sampledFields()) addFieldControls();
     }
     message_ = new QLabel(body_);
     message_->setWordWrap(true);
@@ -259,6 +262,27 @@ void LessonControls::addDsmcControls() {
     });
 }
 
+void LessonControls::addFieldControls() {
+    addDsmcControls(); // the speed, as in the DSMC cell: collisions make these scenes slow
+    const ParamSpec* view = findSpec(controller_->model()->paramSpecs(), ViewChooser::kKey);
+    if (!view || view->kind != ParamKind::Choice) return;
+    QVBoxLayout* group = addGroup(2, 0, 2);
+    group->addWidget(new QLabel(tr("Show"), body_));
+    auto* row = new QHBoxLayout;
+    group->addLayout(row);
+    for (const std::string& choice : view->choices) {
+        const QString key = QString::fromStdString(choice);
+        QPushButton* button = addButton(row, viewChoiceText(key), "lessonView-" + key);
+        button->setCheckable(true);
+        viewButtons_.push_back(button);
+        connect(button, &QPushButton::clicked, this, [this, key] {
+            const QString problem = controller_->setParameters({{ViewChooser::kKey, key.toStdString()}});
+            if (!problem.isEmpty()) say(problem);
+            syncState(); // the buttons show what the model kept
+        });
+    }
+}
+
 void LessonControls::applyParticleCount(int total) {
     Model* model = controller_->model();
     if (!model) return;
@@ -305,6 +329,15 @@ void LessonControls::syncState() {
             pistonButtons_[i]->setEnabled(piston);
             pistonButtons_[i]->setChecked(piston && tools->pistonDirection() == i - 1);
         }
+    if (!viewButtons_.empty()) {
+        const ParamValues values = model->params();
+        const auto shown = values.find(ViewChooser::kKey);
+        for (QPushButton* button : viewButtons_)
+            button->setChecked(shown != values.end() &&
+                               button->objectName() ==
+                                   "lessonView-" +
+                                       QString::fromStdString(std::get<std::string>(shown->second)));
+    }
 }
 
 void LessonControls::say(const QString& sentence) {

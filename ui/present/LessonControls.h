@@ -1,11 +1,13 @@
 // The few large controls a lesson needs in present mode, per scene. Gas: temperature (hold to heat or
 // cool), number of particles, the piston (compress / stop / expand) and gravity; fluid: gravity and
-// pouring; DSMC: run, reset and speed. Every change goes through the SimulationController.
+// pouring; DSMC: run, reset and speed; a scene with sampled fields (the wind tunnel): speed and what the
+// viewport shows, the particles or a field. Every change goes through the SimulationController.
 #pragma once
 
 #include "viewport/ViewportCore.h"
 
 #include <QWidget>
+#include <vector>
 
 class QLabel;
 class QPushButton;
@@ -35,6 +37,7 @@ private:
     void addGasControls();
     void addFluidControls();
     void addDsmcControls();
+    void addFieldControls();
     void addPistonGroup(QVBoxLayout* drive, QVBoxLayout* toggle);
     // The downward acceleration "gravity", the same key in every scene, from 0 to maximum [L/T²].
     void addGravitySlider(QVBoxLayout* group, double maximum);
@@ -55,6 +58,7 @@ private:
     QSlider* count_ = nullptr;
     QLabel* countLabel_ = nullptr;
     QLabel* message_ = nullptr;
+    std::vector<QPushButton*> viewButtons_; // one per choice of the `view` parameter
     QTimer* pour_;
 };
 

@@ -4,6 +4,7 @@
 
 #include "FrameProfile.h"
 #include "Palette.h"
+#include "ParticleSplat.h"
 #include "SimulationController.h"
 #include "ViewportCore.h"
 
@@ -190,7 +191,7 @@ void GLViewport::drawGpuParticles(const GpuParticles& particles) {
 
 void GLViewport::drawParticles() {
     const SceneView& scene = core_->scene();
-    if (!ready_) return;
+    if (!ready_ || !scene.drawParticles || splatsParticles(scene)) return;
     if (scene.gpu) {
         if (gpuReady_) drawGpuParticles(*scene.gpu);
         return;
@@ -244,8 +245,14 @@ void GLViewport::paintFrame() {
     const auto& bg = core_->scene().background;
     glClearColor(bg[0], bg[1], bg[2], 1.0f);
     glClear(GL_COLOR_BUFFER_BIT);
+    if (core_->scene().field) { // under the particles: QPainter's GL engine draws it as one texture
+        painter.endNativePainting();
+        core_->paintField(painter);
+        painter.beginNativePainting();
+    }
     drawParticles();
     painter.endNativePainting();
+    if (splatsParticles(core_->scene())) core_->paintParticles(painter);
     core_->paintOverlay(painter);
     painter.end();
     core_->endPaint();

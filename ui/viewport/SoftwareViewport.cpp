@@ -1,4 +1,4 @@
-// SoftwareViewport: background, particles, overlay, in that order.
+// SoftwareViewport: background, the sampled field, particles, overlay, in that order.
 #include "SoftwareViewport.h"
 
 #include "FrameProfile.h"
@@ -23,6 +23,7 @@ void SoftwareViewport::paintEvent(QPaintEvent*) {
     QPainter painter(this);
     const auto& bg = core_->scene().background;
     painter.fillRect(rect(), QColor::fromRgbF(bg[0], bg[1], bg[2]));
+    core_->paintField(painter);
     painter.setRenderHint(QPainter::Antialiasing);
     core_->paintParticles(painter);
     core_->paintOverlay(painter);

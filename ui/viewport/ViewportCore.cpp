@@ -4,8 +4,11 @@
 // while time stands still the body is placed at once, at rest.
 #include "ViewportCore.h"
 
+#include "FieldOverlay.h"
 #include "Palette.h"
+#include "ParticleSplat.h"
 #include "SimulationController.h"
+#include "ViewportAxes.h"
 #include "i18n/Translations.h"
 
 #include <QMouseEvent>
@@ -25,7 +28,6 @@ constexpr double kPointRadiusPx = 2.0;
 const QColor kWalls(200, 205, 220);
 const QColor kObstacleFill(120, 128, 150);
 const QColor kObstacleHover(170, 178, 200);
-const QColor kLegendBack(0, 0, 0, 150);
 
 double distance(QPointF a, QPointF b) {
     return std::hypot(a.x() - b.x(), a.y() - b.y());
@@ -40,7 +42,11 @@ ViewportCore::ViewportCore(SimulationController* controller, QWidget* widget)
         gesture_ = Gesture::None;
         hovered_.reset();
         steeredTo_.reset();
+        probe_.reset();
+        setProfileLine(std::nullopt); // another domain: the old line would mean nothing there
     });
+    // A parameter such as the field shown changes the picture even while time stands still.
+    connect(controller, &SimulationController::parametersChanged, widget, qOverload<>(&QWidget::update));
     frameClock_.start();
     updateCursor();
 }
@@ -87,6 +93,9 @@ void ViewportCore::updateCursor() {
     case ViewportTool::Piston:
         widget_->setCursor(Qt::SplitHCursor);
         break;
+    case ViewportTool::ProfileLine:
+        widget_->setCursor(Qt::CrossCursor);
+        break;
     }
 }
 
@@ -130,6 +139,10 @@ bool ViewportCore::eventFilter(QObject* watched, QEvent* event) {
 void ViewportCore::press(QMouseEvent* event) {
     pressPx_ = currentPx_ = event->position();
     const SceneTools* tools = controller_->tools();
+    if (event->button() == Qt::RightButton && probe_) {
+        closeProbe();
+        return;
+    }
     if (event->button() == Qt::MiddleButton || (event->button() == Qt::LeftButton && !tools)) {
         gesture_ = Gesture::Pan;
         return;
@@ -145,6 +158,10 @@ void ViewportCore::press(QMouseEvent* event) {
             grabOffset_ = QPointF(o.x - world.x(), o.y - world.y());
         } else if (nearPiston(pressPx_) && tools->hasPiston()) {
             gesture_ = Gesture::DragPiston;
+        } else if (hasSampledFields()) { // read the local values, as Bird's Visual Wind Tunnel does
+            gesture_ = Gesture::Probe;
+            probe_ = world;
+            widget_->update();
         } else {
             gesture_ = scene_.dragPours ? Gesture::Pour : Gesture::Pan;
         }
@@ -171,6 +188,13 @@ void ViewportCore::press(QMouseEvent* event) {
         widget_->update();
         break;
     }
+    case ViewportTool::ProfileLine:
+        if (!hasSampledFields()) {
+            emit statusMessage(tr("This experiment samples no fields to draw a profile of."));
+            return;
+        }
+        gesture_ = Gesture::Line;
+        break;
     case ViewportTool::Remove:
         if (const auto hit = obstacleAt(world)) {
             controller_->removeObstacle(*hit);
@@ -205,8 +229,12 @@ void ViewportCore::move(QMouseEvent* event) {
     case Gesture::DragPiston:
         steerPiston(world.x());
         break;
+    case Gesture::Probe:
+        probe_ = world;
+        break;
     case Gesture::Rectangle:
     case Gesture::Pour:
+    case Gesture::Line:
         break;
     }
     widget_->update();
@@ -234,6 +262,13 @@ void ViewportCore::release(QMouseEvent* event) {
         controller_->releaseObstacle(grabbed_); // let go: it coasts to the last target and stops there
     }
     if (finished == Gesture::DragPiston) steerPiston(transform_.toWorld(currentPx_).x());
+    if (finished == Gesture::Probe) probe_ = transform_.toWorld(currentPx_);
+    if (finished == Gesture::Line) {
+        if (distance(pressPx_, currentPx_) < kClickPx)
+            emit statusMessage(tr("Drag across the flow to draw the profile line."));
+        else
+            setProfileLine(QLineF(transform_.toWorld(pressPx_), transform_.toWorld(currentPx_)));
+    }
     if ((finished == Gesture::Rectangle || finished == Gesture::Pour) && tools) {
         QPointF a = transform_.toWorld(pressPx_), b = transform_.toWorld(currentPx_);
         const bool click = distance(pressPx_, currentPx_) < kClickPx;
@@ -257,7 +292,20 @@ void ViewportCore::release(QMouseEvent* event) {
     widget_->update();
 }
 
+void ViewportCore::paintField(QPainter& painter) const {
+    if (scene_.field) pl::ui::paintField(painter, transform_, *scene_.field);
+}
+
 void ViewportCore::paintParticles(QPainter& painter) const {
+    if (!scene_.drawParticles) return;
+    if (splatsParticles(scene_)) {
+        const QRect area = transform_.toWidget(scene_.left, scene_.bottom, scene_.right, scene_.top)
+                               .normalized()
+                               .toAlignedRect()
+                               .intersected(widget_->rect());
+        painter.drawImage(area.topLeft(), splatParticles(scene_, transform_, area));
+        return;
+    }
     painter.setPen(Qt::NoPen);
     const double scale = transform_.scale();
     for (std::size_t i = 0; i < scene_.size(); ++i) {
@@ -275,55 +323,7 @@ void ViewportCore::paintOverlay(QPainter& painter) const {
         painter.setPen(QPen(kWalls, 1.5));
         painter.drawRect(box);
     }
-    if (!scene_.xLabel.empty() || !scene_.yLabel.empty()) {
-        painter.setPen(QPen(kWalls, 1.0, Qt::DashLine));
-        const QPointF origin = transform_.toWidget(0, 0);
-        painter.drawLine(QPointF(box.left(), origin.y()), QPointF(box.right(), origin.y()));
-        painter.drawLine(QPointF(origin.x(), box.top()), QPointF(origin.x(), box.bottom()));
-        // Tick values along the bottom and the left edge of what is visible, inside the box (the view's
-        // margin is narrow): steps of 1, 2 or 5 × 10^k, about one per kTickSpacingPx, following zoom and pan.
-        constexpr double kTickSpacingPx = 90.0, kTickPx = 5.0;
-        const auto niceStep = [](double span, double pixels) {
-            const double raw = std::abs(span) * kTickSpacingPx / std::max(pixels, 1.0);
-            const double decade = std::pow(10.0, std::floor(std::log10(raw)));
-            for (const double m : {1.0, 2.0, 5.0})
-                if (m * decade >= raw) return m * decade;
-            return 10.0 * decade;
-        };
-        const auto tickText = [](double v, double step) {
-            return QString::number(std::abs(v) < 1e-6 * step ? 0.0 : v, 'g', 4);
-        };
-        const QFontMetricsF metrics(painter.font());
-        const double line = metrics.height();
-        const QRectF shown = box.intersected(QRectF(QPointF(0, 0), transform_.size()));
-        const QPointF low = transform_.toWorld(shown.bottomLeft()),
-                      high = transform_.toWorld(shown.topRight());
-        painter.setPen(kWalls);
-        double numbersWidth = 0; // of the y tick values, so the y label starts beside them
-        if (shown.width() > 0 && shown.height() > 0 && high.x() > low.x() && high.y() > low.y()) {
-            const double dx = niceStep(high.x() - low.x(), shown.width());
-            for (double v = std::ceil(low.x() / dx) * dx; v <= high.x() + 1e-9 * dx; v += dx) {
-                const double px = transform_.toWidget(v, 0).x();
-                painter.drawLine(QPointF(px, shown.bottom()), QPointF(px, shown.bottom() - kTickPx));
-                painter.drawText(QRectF(px - 4 * line, shown.bottom() - kTickPx - line, 8 * line, line),
-                                 Qt::AlignCenter, tickText(v, dx));
-            }
-            const double dy = niceStep(high.y() - low.y(), shown.height());
-            for (double v = std::ceil(low.y() / dy) * dy; v <= high.y() + 1e-9 * dy; v += dy) {
-                const double py = transform_.toWidget(0, v).y();
-                const QString text = tickText(v, dy);
-                painter.drawLine(QPointF(shown.left(), py), QPointF(shown.left() + kTickPx, py));
-                painter.drawText(QRectF(shown.left() + kTickPx + 2, py - 0.5 * line, 8 * line, line),
-                                 Qt::AlignLeft | Qt::AlignVCenter, text);
-                numbersWidth = std::max(numbersWidth, metrics.horizontalAdvance(text));
-            }
-        }
-        // The axis names sit clear of the tick values: x above the bottom row, y right of the left column.
-        painter.drawText(shown.adjusted(4, 0, -4, -(kTickPx + line + 2)), Qt::AlignRight | Qt::AlignBottom,
-                         coreText(scene_.xLabel));
-        painter.drawText(shown.adjusted(kTickPx + numbersWidth + 12, 4, 0, 0), Qt::AlignLeft | Qt::AlignTop,
-                         coreText(scene_.yLabel));
-    }
+    if (!scene_.xLabel.empty() || !scene_.yLabel.empty()) paintAxes(painter, transform_, scene_, box);
     if (!scene_.hint.empty()) {
         // The seed's faint instruction: large, bold, 20 % opaque, out of the way once there is fluid.
         QFont font = painter.font();
@@ -335,6 +335,8 @@ void ViewportCore::paintOverlay(QPainter& painter) const {
         painter.drawText(box, Qt::AlignCenter | Qt::TextWordWrap, coreText(scene_.hint));
         painter.restore();
     }
+    painter.save();
+    painter.setClipRect(box.normalized()); // a body on a symmetry plane shows its half inside the domain
     for (std::size_t i = 0; i < scene_.obstacles.size(); ++i) {
         const Obstacle& o = scene_.obstacles[i];
         const bool active = hovered_ == i || (gesture_ == Gesture::DragObstacle && grabbed_ == i);
@@ -347,6 +349,7 @@ void ViewportCore::paintOverlay(QPainter& painter) const {
             painter.drawRect(transform_.toWidget(o.x - o.halfWidth, o.y - o.halfHeight, o.x + o.halfWidth,
                                                  o.y + o.halfHeight));
     }
+    painter.restore();
     paintSteeredTarget(painter);
     if (scene_.pistonX) {
         const double x = transform_.toWidget(*scene_.pistonX, 0).x();
@@ -367,7 +370,18 @@ void ViewportCore::paintOverlay(QPainter& painter) const {
         painter.setBrush(QColor(120, 128, 150, 90));
         painter.drawEllipse(currentPx_, r, r);
     }
-    paintLegend(painter);
+    if (gesture_ == Gesture::Line)
+        paintProfileLine(painter, QLineF(pressPx_, currentPx_));
+    else if (profileLine_)
+        paintProfileLine(painter, QLineF(transform_.toWidget(profileLine_->x1(), profileLine_->y1()),
+                                         transform_.toWidget(profileLine_->x2(), profileLine_->y2())));
+    paintLegends(painter, transform_, scene_);
+    if (probe_) {
+        const QStringList text = probeText();
+        if (!text.isEmpty())
+            paintProbe(painter, transform_.toWidget(probe_->x(), probe_->y()), text.front(), text.mid(1),
+                       transform_.size());
+    }
 }
 
 void ViewportCore::paintSteeredTarget(QPainter& painter) const {
@@ -387,46 +401,6 @@ void ViewportCore::paintSteeredTarget(QPainter& painter) const {
             transform_.toWidget(x - o.halfWidth, y - o.halfHeight, x + o.halfWidth, y + o.halfHeight));
     painter.drawLine(transform_.toWidget(o.x, o.y), transform_.toWidget(x, y));
     painter.restore();
-}
-
-void ViewportCore::paintLegend(QPainter& painter) const {
-    const QFontMetricsF metrics(painter.font());
-    const double line = metrics.height();
-    const double width = 11 * line;
-    if (isCategorical(scene_.colours)) {
-        if (scene_.categories.empty()) return;
-        const QRectF frame(transform_.size().width() - width - 8, 8, width,
-                           (static_cast<double>(scene_.categories.size()) + 0.6) * line);
-        painter.setPen(Qt::NoPen);
-        painter.setBrush(kLegendBack);
-        painter.drawRoundedRect(frame, 4, 4);
-        for (std::size_t c = 0; c < scene_.categories.size(); ++c) {
-            const double y = frame.top() + (static_cast<double>(c) + 0.3) * line;
-            painter.setBrush(paletteColour(scene_.colours, static_cast<double>(c)));
-            painter.setPen(Qt::NoPen);
-            painter.drawEllipse(QPointF(frame.left() + 0.7 * line, y + 0.5 * line), 0.3 * line, 0.3 * line);
-            painter.setPen(Qt::white);
-            painter.drawText(QRectF(frame.left() + 1.4 * line, y, width - 1.6 * line, line), Qt::AlignVCenter,
-                             coreText(scene_.categories[c]));
-        }
-        return;
-    }
-    const QRectF frame(transform_.size().width() - width - 8, 8, width, 2.6 * line);
-    painter.setPen(Qt::NoPen);
-    painter.setBrush(kLegendBack);
-    painter.drawRoundedRect(frame, 4, 4);
-    const QRectF bar(frame.left() + 0.5 * line, frame.top() + 0.3 * line, width - line, 0.8 * line);
-    QLinearGradient gradient(bar.topLeft(), bar.topRight());
-    const QVector<QColor>& stops = paletteStops(scene_.colours);
-    for (qsizetype s = 0; s < stops.size(); ++s)
-        gradient.setColorAt(static_cast<double>(s) / static_cast<double>(stops.size() - 1), stops[s]);
-    painter.setBrush(gradient);
-    painter.drawRect(bar);
-    painter.setPen(Qt::white);
-    const QRectF labels(bar.left(), bar.bottom() + 0.1 * line, bar.width(), line);
-    painter.drawText(labels, Qt::AlignLeft | Qt::AlignVCenter, QStringLiteral("0"));
-    painter.drawText(labels, Qt::AlignHCenter | Qt::AlignVCenter, coreText(scene_.colourLabel));
-    painter.drawText(labels, Qt::AlignRight | Qt::AlignVCenter, QString::number(scene_.colourMax, 'g', 3));
 }
 
 } // namespace pl::ui

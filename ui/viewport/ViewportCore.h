@@ -1,15 +1,18 @@
 // What the GL and the software viewport share: the scene snapshot of the current frame, the world ↔
-// widget transform, the mouse tools (an event filter on the viewport widget), the overlay drawn with
-// QPainter (box, obstacles, piston, legend, tool previews) and the frame-rate meter.
+// widget transform, the mouse tools (an event filter on the viewport widget), the sampled field under the
+// particles, the overlay drawn with QPainter (box, obstacles, piston, legends, tool previews, the click
+// probe, the profile line) and the frame-rate meter.
 #pragma once
 
 #include "ViewTransform.h"
 #include "common/SceneView.h"
 
 #include <QElapsedTimer>
+#include <QLineF>
 #include <QObject>
 #include <QPointF>
 #include <QRectF>
+#include <QStringList>
 #include <optional>
 
 class QPainter;
@@ -20,7 +23,8 @@ namespace pl::ui {
 
 class SimulationController;
 
-enum class ViewportTool { Drag, Spawn, AddDisc, AddBox, Remove, Piston };
+// In the order of the Tools menu (MainWindow finds a tool's action by this index).
+enum class ViewportTool { Drag, Spawn, AddDisc, AddBox, Remove, Piston, ProfileLine };
 
 class ViewportCore : public QObject {
     Q_OBJECT
@@ -36,7 +40,11 @@ public:
     void setDrawsGpuBuffers(bool on) { drawsGpuBuffers_ = on; }
     bool drawsGpuBuffers() const { return drawsGpuBuffers_; }
     const ViewTransform& transform() const { return transform_; }
-    void paintParticles(QPainter& painter) const; // the CPU path; the GL viewport draws them in a shader
+    // The scene's sampled field under everything else (SceneView::field), when it has one.
+    void paintField(QPainter& painter) const;
+    // The QPainter path of the particles; the GL viewport draws them in a shader unless the scene is
+    // dense enough to splat into an image (ParticleSplat.h), which both viewports then do here.
+    void paintParticles(QPainter& painter) const;
     void paintOverlay(QPainter& painter) const;
 
     double framesPerSecond() const { return framesPerSecond_; }
@@ -44,8 +52,18 @@ public:
     void setTool(ViewportTool tool);
     void zoomToFit();
 
+    // The click probe (the Drag tool on a scene with sampled fields, away from bodies): the world point
+    // it reads [m], and what it shows there now, the position line first. A right click closes it.
+    std::optional<QPointF> probePoint() const { return probe_; }
+    QStringList probeText() const;
+    void closeProbe();
+    // The line the Profile line tool drew, in world units; the Profile dock plots the field along it.
+    std::optional<QLineF> profileLine() const { return profileLine_; }
+    void setProfileLine(std::optional<QLineF> line);
+
 signals:
     void statusMessage(const QString& message);
+    void profileLineChanged();
 
 protected:
     bool eventFilter(QObject* watched, QEvent* event) override;
@@ -60,7 +78,7 @@ private:
     void steerPiston(double x);
     std::optional<std::size_t> obstacleAt(QPointF world) const;
     bool nearPiston(QPointF widgetPoint) const;
-    void paintLegend(QPainter& painter) const;
+    bool hasSampledFields() const;
     void paintSteeredTarget(QPainter& painter) const;
     void updateCursor();
 
@@ -72,13 +90,16 @@ private:
 
     // Gesture state
     // Pour: a spawn rectangle drawn with the Drag tool where the scene pours on drag (SceneView::dragPours).
-    enum class Gesture { None, DragObstacle, DragPiston, Rectangle, Pour, Pan };
+    // Probe: the Drag tool reading the fields; Line: the Profile line tool drawing its line.
+    enum class Gesture { None, DragObstacle, DragPiston, Rectangle, Pour, Pan, Probe, Line };
     Gesture gesture_ = Gesture::None;
     std::size_t grabbed_ = 0;
     QPointF grabOffset_;               // obstacle centre − mouse, in world units
     std::optional<QPointF> steeredTo_; // the last target handed to the model while time ran
     QPointF pressPx_, currentPx_;
     std::optional<std::size_t> hovered_;
+    std::optional<QPointF> probe_;      // world point the probe reads
+    std::optional<QLineF> profileLine_; // world units
 
     QElapsedTimer frameClock_;
     int framesCounted_ = 0;

@@ -1,10 +1,11 @@
-// The SceneTools contract holds alike in every scene with tools (the gas and the fluid): centres and
-// drag targets are clamped into the box, an index that names no obstacle is refused, a placed body
-// rests at once, a scene without a piston refuses the piston's tools, heat / cool refuses a factor that
+// The SceneTools contract holds alike in every scene with tools (the gas, the fluid and the wind tunnel):
+// centres and drag targets are clamped into the box, an index that names no obstacle is refused, a placed
+// body rests at once, a scene without a piston refuses the piston's tools, heat / cool refuses a factor that
 // is not positive; and the direction of time is the model's, refused where the dynamics cannot reverse.
 #include "dsmc/DsmcModel.h"
 #include "md/MdModel.h"
 #include "pbf/PbfModel.h"
+#include "tunnel/TunnelModel.h"
 
 #include <QtTest>
 #include <functional>
@@ -46,6 +47,7 @@ class TestSceneTools : public QObject {
         QTest::addColumn<MakeScene>("make");
         QTest::newRow("gas") << MakeScene([] { return std::make_unique<MdModel>(); });
         QTest::newRow("fluid") << MakeScene([] { return std::make_unique<PbfModel>(); });
+        QTest::newRow("tunnel") << MakeScene([] { return std::make_unique<TunnelModel>(); });
     }
 
 private slots:

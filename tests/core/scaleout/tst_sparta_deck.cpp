@@ -1,5 +1,7 @@
 // The SPARTA deck of the DSMC cell against SPARTA's documented input syntax (species, collide vss,
 // read_particles, stats_style, dump particle) and the cross-section mapping against SPARTA's VSS formula.
+// The wind tunnel's deck: tst_sparta_tunnel_deck.cpp.
+#include "DeckText.h"
 #include "catalog/ModelCatalog.h"
 #include "common/AtomicFile.h"
 #include "scaleout/SpartaDeck.h"
@@ -12,28 +14,9 @@
 #include <sstream>
 
 using namespace pl;
+using namespace pl::deck_text;
 
 namespace {
-
-std::vector<std::string> words(const std::string& line) {
-    std::istringstream in(line);
-    std::vector<std::string> out;
-    for (std::string w; in >> w;) out.push_back(w);
-    return out;
-}
-
-std::vector<std::string> lines(const std::string& text) {
-    std::vector<std::string> out;
-    std::istringstream in(text);
-    for (std::string l; std::getline(in, l);) out.push_back(l);
-    return out;
-}
-
-const std::string& file(const scaleout::Deck& deck, const std::string& name) {
-    for (const auto& f : deck.files)
-        if (f.name == name) return f.content;
-    qFatal("deck has no %s", name.c_str());
-}
 
 std::unique_ptr<DsmcModel> cellFor(const std::string& name,
                                    const std::map<std::string, ParamValue>& sets = {}) {

@@ -1,0 +1,195 @@
+// The wind tunnel's parameter table: units, ranges, tooltips, which values act at once, and the
+// cross-field checks.
+#include "TunnelParams.h"
+
+#include <string>
+#include <tuple>
+
+namespace pl {
+
+namespace {
+constexpr double kMaxCells = 1 << 22; // 4 M cells: the per-cell arrays stay below ~200 MB
+} // namespace
+
+double TunnelParams::maxParticles() {
+    return 1 << 26; // 67 M molecules: 44 bytes each, 3 GB
+}
+
+double TunnelParams::mass() const {
+    return massAmu * kAtomicMass;
+}
+
+void TunnelParams::validate() const {
+    if (static_cast<double>(cellsX) * static_cast<double>(cellsY) > kMaxCells)
+        throw ParamError("cells_x", "{cells_x} × {cells_y} = " + std::to_string(cellsX * cellsY) +
+                                        " cells exceed the limit of " +
+                                        std::to_string(static_cast<long long>(kMaxCells)));
+    // The free stream filling the whole domain must fit (the count settles near it in a tunnel).
+    const double fill = streamDensity * boxWidth * boxHeight / fn;
+    if (!(fill <= maxParticles()))
+        throw ParamError("fn", "the free stream fills the domain with " + formatNumber(fill, 3) +
+                                   " molecules, more than the limit of " + formatNumber(maxParticles(), 3) +
+                                   "; raise {fn} to at least " +
+                                   formatNumber(streamDensity * boxWidth * boxHeight / maxParticles(), 3));
+    // A periodic side hands its particles to the opposite side, which must then take them in.
+    if ((left == TunnelBoundary::Periodic) != (right == TunnelBoundary::Periodic))
+        throw ParamError(left == TunnelBoundary::Periodic ? "right" : "left",
+                         "{left} and {right} must both be periodic or neither");
+    if ((bottom == TunnelBoundary::Periodic) != (top == TunnelBoundary::Periodic))
+        throw ParamError(bottom == TunnelBoundary::Periodic ? "top" : "bottom",
+                         "{bottom} and {top} must both be periodic or neither");
+    if (pistonOn && left == TunnelBoundary::Periodic)
+        throw ParamError("piston_on", "the piston replaces the left side, which is periodic; make {left} "
+                                      "and {right} non-periodic or switch {piston_on} off");
+}
+
+const std::vector<ParamField<TunnelParams>>& TunnelParams::fields() {
+    using P = TunnelParams;
+    static const std::vector<ParamField<P>> list = [] {
+        const P d;
+        std::vector<ParamField<P>> f;
+        const std::string domain = "Domain and method", gas = "Gas", stream = "Free stream", sides = "Sides",
+                          bodies = "Bodies and piston", sampling = "Sampling and view";
+        f.push_back(bindReal(&P::boxWidth, makeSpec("box_width", "Width", "m", domain,
+                                                    "Length of the domain along the stream (x).", 1e-9, 1e3,
+                                                    0.01, d.boxWidth)));
+        f.push_back(bindReal(&P::boxHeight, makeSpec("box_height", "Height", "m", domain,
+                                                     "Height of the domain (y); the depth is 1 m.", 1e-9, 1e3,
+                                                     0.01, d.boxHeight)));
+        f.push_back(bindInteger(&P::cellsX, makeSpec("cells_x", "Cells along x", "", domain,
+                                                     "Collision and sampling cells along x; Bird's "
+                                                     "guideline is a cell width below λ/2.",
+                                                     1, 1 << 16, 10, double(d.cellsX))));
+        f.push_back(bindInteger(&P::cellsY, makeSpec("cells_y", "Cells along y", "", domain,
+                                                     "Collision and sampling cells along y.", 1, 1 << 16, 10,
+                                                     double(d.cellsY))));
+        f.push_back(bindReal(&P::fn, makeSpec("fn", "Particle weight F_N", "", domain,
+                                              "Real molecules (per m of depth) each simulated particle "
+                                              "stands for; aim for ≥ 5 particles per free-stream cell.",
+                                              1e-6, 1e30, 0, d.fn)));
+        f.push_back(bindReal(&P::dt, makeSpec("dt", "Time step", "s", domain,
+                                              "Keep it below a quarter of the mean collision time and "
+                                              "the stream's cell transit time.",
+                                              1e-15, 1e3, 0, d.dt, true)));
+        f.push_back(bindInteger(&P::runSteps, makeSpec("run_steps", "Run length", "steps", domain,
+                                                       "The run stops after this many steps; 0 runs on.", 0,
+                                                       1e12, 100, double(d.runSteps), true)));
+        f.push_back(bindReal(&P::massAmu,
+                             makeSpec("mass_amu", "Molecular mass", "u", gas,
+                                      "Mass of one molecule; argon is 39.948.", 1e-3, 1e6, 1, d.massAmu)));
+        f.push_back(bindChoice(&P::crossSection,
+                               makeChoice("cross_section", "Cross-section", gas,
+                                          "seed: σ = 1e-18 c_r^-1/2 m²; hard-sphere: σ = π d²; vhs: "
+                                          "variable hard sphere (d_ref, T_ref, ω); maxwell: σ c_r constant.",
+                                          true)));
+        f.push_back(bindReal(&P::diameter, makeSpec("diameter", "Hard-sphere diameter", "m", gas,
+                                                    "Molecular diameter of the hard-sphere model.", 1e-12,
+                                                    1e-6, 0, d.diameter, true)));
+        f.push_back(bindReal(&P::vhsDiameter, makeSpec("vhs_d_ref", "VHS d_ref", "m", gas,
+                                                       "VHS reference diameter (argon: 4.17e-10).", 1e-12,
+                                                       1e-6, 0, d.vhsDiameter, true)));
+        f.push_back(bindReal(&P::vhsTref, makeSpec("vhs_T_ref", "VHS T_ref", "K", gas,
+                                                   "Temperature at which d = d_ref (273 K).", 1e-3, 1e6, 1,
+                                                   d.vhsTref, true)));
+        f.push_back(
+            bindReal(&P::vhsOmega, makeSpec("vhs_omega", "VHS ω", "", gas,
+                                            "Viscosity index: 0.5 hard sphere, 1 Maxwell, argon 0.81.", 0.5,
+                                            1.0, 0.01, d.vhsOmega, true)));
+        f.push_back(bindReal(&P::maxwellSigmaCr, makeSpec("maxwell_sigma_cr", "Maxwell σ c_r", "m³/s", gas,
+                                                          "The constant σ c_r of Maxwell molecules.", 1e-30,
+                                                          1e-5, 0, d.maxwellSigmaCr, true)));
+        f.push_back(bindReal(&P::streamDensity, makeSpec("stream_density", "Number density", "m⁻³", stream,
+                                                         "Number density of the free stream.", 1e3, 1e32, 0,
+                                                         d.streamDensity, true)));
+        f.push_back(bindReal(&P::streamSpeed, makeSpec("stream_speed", "Stream speed", "m/s", stream,
+                                                       "Velocity of the free stream along +x.", -1e6, 1e6, 10,
+                                                       d.streamSpeed, true)));
+        f.push_back(bindReal(&P::streamTemperature, makeSpec("stream_temperature", "Stream temperature", "K",
+                                                             stream, "Temperature of the free stream.", 1e-3,
+                                                             1e6, 10, d.streamTemperature, true)));
+        f.push_back(bindChoice(&P::initial, makeChoice("initial", "Initial gas", stream,
+                                                       "empty: vacuum; stream: the free stream everywhere; "
+                                                       "rest: the free-stream gas at rest.")));
+        for (auto [member, key, label] :
+             {std::tuple{&P::left, "left", "Left side"}, std::tuple{&P::right, "right", "Right side"},
+              std::tuple{&P::bottom, "bottom", "Bottom side"}, std::tuple{&P::top, "top", "Top side"}})
+            f.push_back(bindChoice(member, makeChoice(key, label, sides,
+                                                      "inflow: the free stream enters; outflow: vacuum; "
+                                                      "specular: a mirror; diffuse: a wall at the wall "
+                                                      "temperature; periodic: wraps to the opposite side.",
+                                                      true)));
+        f.push_back(bindReal(&P::wallTemperature, makeSpec("wall_temperature", "Wall temperature", "K", sides,
+                                                           "Temperature of the diffuse sides.", 1e-3, 1e6, 10,
+                                                           d.wallTemperature, true)));
+        f.push_back(
+            bindReal(&P::bottomWallSpeed, makeSpec("bottom_wall_speed", "Bottom wall speed", "m/s", sides,
+                                                   "Speed along +x of a diffuse bottom side (Couette flow).",
+                                                   -1e6, 1e6, 10, d.bottomWallSpeed, true)));
+        f.push_back(bindReal(&P::topWallSpeed, makeSpec("top_wall_speed", "Top wall speed", "m/s", sides,
+                                                        "Speed along +x of a diffuse top side.", -1e6, 1e6,
+                                                        10, d.topWallSpeed, true)));
+        f.push_back(bindChoice(&P::surface, makeChoice("surface", "Body surface", bodies,
+                                                       "diffuse: molecules leave at the body temperature; "
+                                                       "specular: they are mirrored.",
+                                                       true)));
+        f.push_back(bindReal(&P::bodyTemperature, makeSpec("body_temperature", "Body temperature", "K",
+                                                           bodies, "Temperature of diffuse bodies.", 1e-3,
+                                                           1e6, 10, d.bodyTemperature, true)));
+        f.push_back(bindReal(&P::toolSpeed, makeSpec("tool_speed", "Tool speed", "m/s", bodies,
+                                                     "Fastest a dragged body or the piston moves.", 1e-6, 1e5,
+                                                     10, d.toolSpeed, true)));
+        f.push_back(bindBool(&P::pistonOn, makeSpec("piston_on", "Piston", "", bodies,
+                                                    "The left side becomes a specular piston that can be "
+                                                    "driven to the right (a shock tube).",
+                                                    0, 0, 0, d.pistonOn)));
+        f.push_back(bindReal(&P::pistonSpeed, makeSpec("piston_speed", "Piston speed", "m/s", bodies,
+                                                       "Speed of the driven piston; > 0 at the start drives "
+                                                       "it into the gas from t = 0.",
+                                                       0, 1e5, 10, d.pistonSpeed, true)));
+        f.push_back(bindInteger(&P::sampleStart,
+                                makeSpec("sample_start", "Sampling starts after", "steps", sampling,
+                                         "Steps after a reset or an edit before the fields are averaged.", 0,
+                                         1e9, 50, double(d.sampleStart), true)));
+        f.push_back(bindChoice(&P::view, makeChoice("view", "View", sampling,
+                                                    "particles, or a sampled field as a colour map.", true)));
+        return f;
+    }();
+    return list;
+}
+
+const ChoiceTable<TunnelBoundary>& choiceTable(TunnelBoundary) {
+    static const ChoiceTable<TunnelBoundary> table{{TunnelBoundary::Inflow, "inflow"},
+                                                   {TunnelBoundary::Outflow, "outflow"},
+                                                   {TunnelBoundary::Specular, "specular"},
+                                                   {TunnelBoundary::Diffuse, "diffuse"},
+                                                   {TunnelBoundary::Periodic, "periodic"}};
+    return table;
+}
+
+const ChoiceTable<TunnelSurface>& choiceTable(TunnelSurface) {
+    static const ChoiceTable<TunnelSurface> table{{TunnelSurface::Diffuse, "diffuse"},
+                                                  {TunnelSurface::Specular, "specular"}};
+    return table;
+}
+
+const ChoiceTable<TunnelInitial>& choiceTable(TunnelInitial) {
+    static const ChoiceTable<TunnelInitial> table{
+        {TunnelInitial::Empty, "empty"}, {TunnelInitial::Stream, "stream"}, {TunnelInitial::Rest, "rest"}};
+    return table;
+}
+
+const ChoiceTable<TunnelView>& choiceTable(TunnelView) {
+    static const ChoiceTable<TunnelView> table{{TunnelView::Particles, "particles"},
+                                               {TunnelView::Density, "density"},
+                                               {TunnelView::Speed, "speed"},
+                                               {TunnelView::Temperature, "temperature"},
+                                               {TunnelView::Mach, "mach"}};
+    return table;
+}
+
+const std::vector<ParamSpec>& TunnelParams::describe() {
+    static const std::vector<ParamSpec> list = specsOf(fields());
+    return list;
+}
+
+} // namespace pl

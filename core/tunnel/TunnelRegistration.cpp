@@ -1,0 +1,35 @@
+// The wind tunnel's registration: its kind, parameters, creator, particle count, series and plots, once.
+#include "TunnelSeries.h"
+#include "catalog/ModelDescriptor.h"
+
+namespace pl {
+
+using namespace plot_colours;
+
+const ModelDescriptor& tunnelRegistration() {
+    static const ModelDescriptor descriptor{
+        .kind = "tunnel",
+        .title = "Rarefied flow (DSMC)",
+        .specs = &TunnelParams::describe(),
+        .create = []() -> std::unique_ptr<Model> { return std::make_unique<TunnelModel>(); },
+        .particleCount =
+            [](const Preset& preset) {
+                const TunnelParams p = withValues(TunnelParams{}, TunnelParams::fields(), preset.params);
+                return TunnelModel::initialFillCount(p, preset.obstacles);
+            },
+        .series = tunnelSeriesTable().columns(),
+        .plots = {{"forcesPlot",
+                   "Forces on the bodies",
+                   {"drag [N/m]", {{"drag", "drag", kBlue}, {"drag_avg", "drag, window mean", kBlue, true}}},
+                   {"lift [N/m]",
+                    {{"lift", "lift", kOrange}, {"lift_avg", "lift, window mean", kOrange, true}}}},
+                  {"particlesPlot",
+                   "Molecules",
+                   {"simulated molecules", {{"particles", "molecules", kBlue}}},
+                   {"collisions per step", {{"collisions", "collisions", kRed}}}}},
+        .distributions = {"speedHistogram"},
+    };
+    return descriptor;
+}
+
+} // namespace pl
