@@ -264,6 +264,9 @@ SceneView TunnelModel::sceneFrame() const {
                                  : std::numeric_limits<float>::quiet_NaN();
         view.field = std::move(image);
         view.drawParticles = false;
+        // An empty box would look broken: the window opens sample_start steps after a reset or an edit.
+        if (sampler_.sampledSteps() == 0)
+            view.hint = "Not sampled yet: the fields appear after the start-up steps";
     }
     return view;
 }

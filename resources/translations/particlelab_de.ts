@@ -1484,6 +1484,10 @@ Wirkt nach „Zurücksetzen“.</translation>
         <source>simulated molecules</source>
         <translation>simulierte Moleküle</translation>
     </message>
+    <message>
+        <source>Not sampled yet: the fields appear after the start-up steps</source>
+        <translation>Noch nicht abgetastet: die Felder erscheinen nach den Anlaufschritten</translation>
+    </message>
 </context>
 <context>
     <name>pl::ui::Autosave</name>

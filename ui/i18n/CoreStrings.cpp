@@ -102,7 +102,9 @@ std::vector<std::string> coreDisplayStrings() {
             if (const ParamSpec* spec = findSpec(model->paramSpecs(), "view"))
                 for (const std::string& choice : spec->choices) {
                     model->setParams({{"view", choice}});
-                    if (const auto field = model->sceneView().field) add(field->label);
+                    const SceneView fieldView = model->sceneView();
+                    if (fieldView.field) add(fieldView.field->label);
+                    add(fieldView.hint); // before the window opens
                 }
         }
     }
