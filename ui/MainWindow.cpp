@@ -84,7 +84,8 @@ MainWindow::MainWindow(QWidget* parent)
 }
 
 void MainWindow::createViewport() {
-    // Qt 6.4's QOpenGLWidget crashes on the offscreen platform: draw with QPainter there.
+    // The offscreen platform shows no native OpenGL windows (and Qt 6.4 crashes making GL widgets there):
+    // draw with QPainter there.
     if (QGuiApplication::platformName() == QLatin1String("offscreen")) {
         auto* view = new SoftwareViewport(controller_, this);
         viewportCore_ = view->core();

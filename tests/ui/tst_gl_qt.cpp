@@ -78,7 +78,7 @@ private slots:
             for (int f = 0; f < 3; ++f) window.controller()->advanceFrame();
             auto* viewport = window.findChild<ui::GLViewport*>();
             if (!viewport) return -1;
-            viewport->repaint();
+            QTest::qWait(300); // the viewport's window paints the frames it was asked for
             *gpuFrames = viewport->framesFromGpuBuffers();
             QImage image = viewport->grabFramebuffer();
             // Particle pixels: anything brighter than the dark background.

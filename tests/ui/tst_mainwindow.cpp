@@ -59,11 +59,37 @@ private slots:
 
     void viewportMatchesThePlatform() {
         ui::MainWindow window;
-        // Qt 6.4's QOpenGLWidget crashes on the offscreen platform: it must never be created there.
+        // The offscreen platform shows no OpenGL windows (Qt 6.4 crashes making GL widgets there).
         if (QGuiApplication::platformName() == "offscreen")
             QVERIFY(qobject_cast<ui::SoftwareViewport*>(window.viewport()));
         else
             QVERIFY(qobject_cast<ui::GLViewport*>(window.viewport()));
+    }
+
+    // The GL viewport draws in a native window of its own that takes no input, so the main window stays a
+    // raster window: a GL widget would make Qt compose the whole window through OpenGL every frame.
+    // Clicks on it still reach the viewport's tools.
+    void theViewportDrawsInItsOwnWindow() {
+        if (QGuiApplication::platformName() == "offscreen") QSKIP("no OpenGL windows on this platform");
+        ui::MainWindow window;
+        QVERIFY(window.openPreset("gas-classroom"));
+        window.resize(1280, 800);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QCOMPARE(window.windowHandle()->surfaceType(), QSurface::RasterSurface);
+        const auto glWindows = window.windowHandle()->findChildren<QWindow*>();
+        QCOMPARE(glWindows.size(), 1);
+        QCOMPARE(glWindows.front()->surfaceType(), QSurface::OpenGLSurface);
+        QVERIFY(glWindows.front()->flags().testFlag(Qt::WindowTransparentForInput));
+        QVERIFY(QTest::qWaitForWindowExposed(glWindows.front()));
+        QCOMPARE(glWindows.front()->size(), window.viewport()->size());
+
+        window.viewportCore()->setTool(ui::ViewportTool::AddDisc);
+        const std::size_t before = window.controller()->tools()->obstacles().size();
+        QTest::mouseClick(window.viewport(), Qt::LeftButton, {}, window.viewport()->rect().center());
+        QCOMPARE(window.controller()->tools()->obstacles().size(), before + 1);
+        QVERIFY(!window.viewportImage().isNull());
+        QCOMPARE(window.viewportImage().size(), window.viewport()->size() * window.devicePixelRatio());
     }
 
     void everyBuiltinPresetFeedsItsDocks() {

@@ -46,7 +46,7 @@ ViewportCore::ViewportCore(SimulationController* controller, QWidget* widget)
         setProfileLine(std::nullopt); // another domain: the old line would mean nothing there
     });
     // A parameter such as the field shown changes the picture even while time stands still.
-    connect(controller, &SimulationController::parametersChanged, widget, qOverload<>(&QWidget::update));
+    connect(controller, &SimulationController::parametersChanged, this, &ViewportCore::requestFrame);
     frameClock_.start();
     updateCursor();
 }
@@ -55,6 +55,13 @@ void ViewportCore::beginPaint() {
     const Model* model = controller_->model();
     scene_ = !model ? SceneView{} : drawsGpuBuffers_ ? model->sceneViewSharingGpu() : model->sceneView();
     transform_.fit(scene_, widget_->size(), kMarginPx);
+}
+
+void ViewportCore::requestFrame() const {
+    if (frameRequest_)
+        frameRequest_();
+    else
+        widget_->update();
 }
 
 void ViewportCore::endPaint() {
@@ -69,12 +76,12 @@ void ViewportCore::setTool(ViewportTool tool) {
     tool_ = tool;
     gesture_ = Gesture::None;
     updateCursor();
-    widget_->update();
+    requestFrame();
 }
 
 void ViewportCore::zoomToFit() {
     transform_.zoomToFit();
-    widget_->update();
+    requestFrame();
 }
 
 void ViewportCore::updateCursor() {
@@ -128,7 +135,7 @@ bool ViewportCore::eventFilter(QObject* watched, QEvent* event) {
     case QEvent::Wheel: {
         auto* wheel = static_cast<QWheelEvent*>(event);
         transform_.zoomAt(wheel->position(), std::pow(1.0015, wheel->angleDelta().y()));
-        widget_->update();
+        requestFrame();
         return true;
     }
     default:
@@ -161,7 +168,7 @@ void ViewportCore::press(QMouseEvent* event) {
         } else if (hasSampledFields()) { // read the local values, as Bird's Visual Wind Tunnel does
             gesture_ = Gesture::Probe;
             probe_ = world;
-            widget_->update();
+            requestFrame();
         } else {
             gesture_ = scene_.dragPours ? Gesture::Pour : Gesture::Pan;
         }
@@ -185,7 +192,7 @@ void ViewportCore::press(QMouseEvent* event) {
         disc.x = world.x();
         disc.y = world.y();
         controller_->addObstacle(disc);
-        widget_->update();
+        requestFrame();
         break;
     }
     case ViewportTool::ProfileLine:
@@ -199,7 +206,7 @@ void ViewportCore::press(QMouseEvent* event) {
         if (const auto hit = obstacleAt(world)) {
             controller_->removeObstacle(*hit);
             hovered_.reset();
-            widget_->update();
+            requestFrame();
         }
         break;
     }
@@ -215,9 +222,9 @@ void ViewportCore::move(QMouseEvent* event) {
         const auto hit = obstacleAt(world);
         if (hit != hovered_) {
             hovered_ = hit;
-            widget_->update();
+            requestFrame();
         }
-        if (tool_ == ViewportTool::AddDisc) widget_->update(); // the preview follows the mouse
+        if (tool_ == ViewportTool::AddDisc) requestFrame(); // the preview follows the mouse
         return;
     }
     case Gesture::Pan:
@@ -237,7 +244,7 @@ void ViewportCore::move(QMouseEvent* event) {
     case Gesture::Line:
         break;
     }
-    widget_->update();
+    requestFrame();
 }
 
 void ViewportCore::steerObstacle(QPointF target) {
@@ -286,10 +293,10 @@ void ViewportCore::release(QMouseEvent* event) {
             box.halfHeight = click ? half : 0.5 * std::abs(a.y() - b.y());
             controller_->addObstacle(box);
         }
-        widget_->update();
+        requestFrame();
     }
     updateCursor();
-    widget_->update();
+    requestFrame();
 }
 
 void ViewportCore::paintField(QPainter& painter) const {

@@ -13,6 +13,7 @@
 #include <QPointF>
 #include <QRectF>
 #include <QStringList>
+#include <functional>
 #include <optional>
 
 class QPainter;
@@ -40,6 +41,10 @@ public:
     void setDrawsGpuBuffers(bool on) { drawsGpuBuffers_ = on; }
     bool drawsGpuBuffers() const { return drawsGpuBuffers_; }
     const ViewTransform& transform() const { return transform_; }
+    // Asks for the next frame. By default the widget's update(); a viewport that draws into a window of
+    // its own (GLViewport) hands its own request here instead.
+    void setFrameRequest(std::function<void()> request) { frameRequest_ = std::move(request); }
+    void requestFrame() const;
     // The scene's sampled field under everything else (SceneView::field), when it has one.
     void paintField(QPainter& painter) const;
     // The QPainter path of the particles; the GL viewport draws them in a shader unless the scene is
@@ -105,6 +110,7 @@ private:
     int framesCounted_ = 0;
     double framesPerSecond_ = 0.0;
     bool drawsGpuBuffers_ = false;
+    std::function<void()> frameRequest_;
 };
 
 } // namespace pl::ui

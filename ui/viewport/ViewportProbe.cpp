@@ -14,13 +14,13 @@ bool ViewportCore::hasSampledFields() const {
 
 void ViewportCore::closeProbe() {
     probe_.reset();
-    widget_->update();
+    requestFrame();
 }
 
 void ViewportCore::setProfileLine(std::optional<QLineF> line) {
     if (line == profileLine_) return;
     profileLine_ = line;
-    widget_->update();
+    requestFrame();
     emit profileLineChanged();
 }
 
