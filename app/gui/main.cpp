@@ -17,8 +17,31 @@
 #include <QElapsedTimer>
 #include <QTimer>
 #include <cstdio>
+#include <cstdlib>
+#include <unistd.h>
+
+namespace {
+
+// The desktop app shares its cores with the display: the GL rasteriser (on a machine without a GPU),
+// the X server, the compositor. OpenMP workers that spin at a barrier for milliseconds before they
+// sleep (libgomp's default) starve them, and a worker the scheduler sets aside stalls every step
+// (BENCHMARKS.md, "App frame rate": 49 against 20 fps on a loaded machine). So the app runs its workers
+// passive unless the user set OMP_WAIT_POLICY. libgomp reads the variable once, when it loads, before
+// main: the process starts itself again with it set (same pid, same arguments).
+void runOpenMpWorkersPassive(char** argv) {
+#ifdef __linux__
+    if (std::getenv("OMP_WAIT_POLICY")) return;
+    setenv("OMP_WAIT_POLICY", "passive", 1);
+    execv("/proc/self/exe", argv); // returns only on failure: then go on with the default policy
+#else
+    (void)argv;
+#endif
+}
+
+} // namespace
 
 int main(int argc, char** argv) {
+    runOpenMpWorkersPassive(argv);
     // The GPU models' context shares buffers with the viewports (ui/viewport/QtGlContext.h).
     QApplication::setAttribute(Qt::AA_ShareOpenGLContexts);
     QApplication app(argc, argv);

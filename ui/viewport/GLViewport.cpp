@@ -23,8 +23,7 @@ GLViewport::GLViewport(SimulationController* controller, QWidget* parent)
     layout->setContentsMargins(0, 0, 0, 0);
     layout->addWidget(container);
     core_->setFrameRequest([this] { window_->update(); });
-    connect(controller, &SimulationController::frameAdvanced, window_,
-            qOverload<>(&QPaintDeviceWindow::update));
+    connect(controller, &SimulationController::frameAdvanced, window_, &ViewportWindow::frameAdvanced);
     connect(controller, &SimulationController::modelReplaced, window_,
             qOverload<>(&QPaintDeviceWindow::update));
 }

@@ -225,10 +225,7 @@ void ViewportWindow::drawParticles() {
 }
 
 void ViewportWindow::paintGL() {
-    // A software rasteriser (Mesa llvmpipe) draws this frame on the CPU cores that the model's OpenMP
-    // workers keep spinning on, waiting for the next step (libgomp spins for milliseconds before it
-    // sleeps): let them go, so the frame gets the cores. The next step starts them again (tens of µs).
-    if (softwareRasteriser_) omp_pause_resource_all(omp_pause_soft);
+    releaseIdleWorkers();
     {
         const FramePartTimer timer(FramePart::Viewport);
         core_->beginPaint();
@@ -238,6 +235,20 @@ void ViewportWindow::paintGL() {
         paintFrame(*this);
     }
     FrameProfile::instance().frameShown();
+}
+
+void ViewportWindow::frameAdvanced() {
+    // Right after the frame's steps, not when the paint comes (the window's update request arrives a
+    // few milliseconds later): spinning workers would hold the cores through that wait as well.
+    releaseIdleWorkers();
+    update();
+}
+
+void ViewportWindow::releaseIdleWorkers() {
+    // A software rasteriser (Mesa llvmpipe) draws the frame on the CPU cores that the model's OpenMP
+    // workers keep spinning on, waiting for the next step (libgomp spins for milliseconds before it
+    // sleeps): let them go, so the frame gets the cores. The next step starts them again (tens of µs).
+    if (softwareRasteriser_) omp_pause_resource_all(omp_pause_soft);
 }
 
 QImage ViewportWindow::renderImage() {

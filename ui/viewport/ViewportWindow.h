@@ -29,6 +29,8 @@ public:
     // The current frame drawn into an image of the window's size (an offscreen framebuffer, so it does
     // not depend on what the window's back buffer holds after a swap); null before GL is ready.
     QImage renderImage();
+    // The simulation advanced a frame: asks for a paint.
+    void frameAdvanced();
 
 protected:
     void initializeGL() override;
@@ -37,6 +39,7 @@ protected:
 private:
     void contextGoingAway();
     void releaseGL();
+    void releaseIdleWorkers();
     // Draws the frame into the bound framebuffer of the given device's size.
     void paintFrame(QPaintDevice& device);
     void drawParticles();
