@@ -18,6 +18,11 @@ public:
     // [x0, x1] × [y0, y1] no smaller than reach. Deterministic for any thread count.
     void build(const double* x, const double* y, std::size_t count, double cutoff, double skin, double x0,
                double y0, double x1, double y1);
+    // The same build, called by every thread of an enclosing parallel region (or outside any): its loops
+    // are orphaned work-sharing constructs, so a step can rebuild without forking threads of its own.
+    // Ends with a barrier; the result does not depend on the number of threads.
+    void buildInRegion(const double* x, const double* y, std::size_t count, double cutoff, double skin,
+                       double x0, double y0, double x1, double y1);
 
     // Largest squared displacement since the build, compared with (skin / 2)²: a pair outside the
     // list cannot have come closer than cutoff while this is false.
@@ -54,8 +59,16 @@ public:
     const double* builtY() const { return builtY_.data(); }
 
 private:
-    CellList cells_;
+    CellList cells_; // the grid's geometry; the binning is done here, fused with the search
     void fillRows(); // rowOf_ from offsets_
+    void binParticles(const double* x, const double* y, std::size_t count); // in one omp single
+    // Cell of each particle and the positions in cell order, so the 3×3 search reads them contiguously.
+    std::vector<std::uint32_t> cellX_, cellY_, cellStart_, cellOrder_, cellCursor_;
+    std::vector<double> cellOrderX_, cellOrderY_;
+    // Each thread's rows, found in one pass and then copied to their place in entries_.
+    std::vector<std::vector<std::uint32_t>> threadEntries_;
+    std::vector<std::uint32_t> threadTotals_;
+    bool carrying_ = false;
     std::vector<std::uint32_t> offsets_, entries_, rowOf_;
     std::vector<std::uint8_t> payload_;
     std::vector<std::uint32_t> oldOffsets_, oldEntries_;

@@ -1,11 +1,15 @@
 // Force passes: Verlet neighbour lists built from the cell list (default) and the seed's all-pairs loop;
 // both give the same forces to round-off. Gather form: only particle i's sums take pair (i, j).
+#include "MdDrift.h"
 #include "MdKernels.h"
 #include "MdModel.h"
 #include "MdThreadRange.h"
 #include "common/Parallel.h"
 
+#include <omp.h>
+
 #include <algorithm>
+#include <vector>
 
 namespace pl {
 
@@ -116,6 +120,44 @@ void forceBlock(const ForceArrays& a, const ForceConstants& c, md::ParticleRange
     }
 }
 
+// The force pass's arrays; the list's, read after any rebuild (it reallocates them).
+ForceArrays forceArrays(MdState& s, NeighbourList& list) {
+    return {s.x.data(),   s.y.data(),         s.species.data(), list.offsets(),        list.entries(),
+            list.rowOf(), list.payload(),     s.vx.data(),      s.vy.data(),           s.ax.data(),
+            s.ay.data(),  s.potential.data(), s.virial.data(),  s.contactsBegun.data()};
+}
+
+void forceBlockFor(ContactMode mode, bool energies, const ForceArrays& a, const ForceConstants& c,
+                   md::ParticleRange range) {
+    switch (mode) {
+    case ContactMode::Ignore:
+        energies ? forceBlock<ContactMode::Ignore, true>(a, c, range)
+                 : forceBlock<ContactMode::Ignore, false>(a, c, range);
+        break;
+    case ContactMode::Count:
+        energies ? forceBlock<ContactMode::Count, true>(a, c, range)
+                 : forceBlock<ContactMode::Count, false>(a, c, range);
+        break;
+    case ContactMode::Initialise:
+        energies ? forceBlock<ContactMode::Initialise, true>(a, c, range)
+                 : forceBlock<ContactMode::Initialise, false>(a, c, range);
+        break;
+    }
+}
+
+// MdModel::Contacts (protected, so deduced here rather than named) as the force pass's template argument.
+template <class Contacts> ContactMode contactModeOf(Contacts contacts) {
+    if (contacts == Contacts::Count) return ContactMode::Count;
+    if (contacts == Contacts::Initialise) return ContactMode::Initialise;
+    return ContactMode::Ignore;
+}
+
+// Each thread's share of the drift's reductions, on a cache line of its own.
+struct alignas(64) DriftOutcome {
+    double worst = 0.0; // largest squared displacement since the list build
+    bool escaped = false;
+};
+
 } // namespace
 
 void MdModel::computeForces(Contacts contacts, double kickAfter, bool energies) {
@@ -147,42 +189,55 @@ void MdModel::refreshEnergies() {
 }
 
 void MdModel::computeForcesNeighbourList(Contacts contacts, double kickAfter, bool energies) {
+    const std::size_t count = state_.size();
+    const ForceArrays a = forceArrays(state_, neighbours_);
+    const ForceConstants c{speciesTable(params_), params_.stiffness, params_.appliedGravity(), kickAfter};
+    const ContactMode mode = contactModeOf(contacts);
+    // One region; each thread owns a block of disks and the list rows that belong to them.
+#pragma omp parallel if (static_cast <long long>(count) >= kParallelMinParticles)
+    forceBlockFor(mode, energies, a, c, md::threadRange(count));
+}
+
+// driftStage, then computeForces with the neighbour list, in one parallel region: the drift's largest
+// displacement is combined after a barrier (every thread takes the same maximum, so every thread takes
+// the same decision to rebuild), the list is rebuilt by the region's threads, then each thread computes
+// the forces on its own block. The same operations on the same blocks as the two passes: bit-identical.
+void MdModel::driftThenForces(double kickBefore, double h, double kickAfterDrift, Contacts contacts,
+                              double kickAfter) {
+    ++forceEvaluations_;
     MdState& s = state_;
     const std::size_t count = s.size();
-    const ForceArrays a{s.x.data(),
-                        s.y.data(),
-                        s.species.data(),
-                        neighbours_.offsets(),
-                        neighbours_.entries(),
-                        neighbours_.rowOf(),
-                        neighbours_.payload(),
-                        s.vx.data(),
-                        s.vy.data(),
-                        s.ax.data(),
-                        s.ay.data(),
-                        s.potential.data(),
-                        s.virial.data(),
-                        s.contactsBegun.data()};
+    const md::Boundaries walls = boundaries(h);
+    const bool track = neighbours_.valid();
+    const md::DriftArrays drift{s.x.data(),  s.y.data(),           s.vx.data(),          s.vy.data(),
+                                s.ax.data(), s.ay.data(),          s.wallImpulse.data(), s.species.data(),
+                                s.id.data(), neighbours_.builtX(), neighbours_.builtY()};
+    const md::DriftStep step{kickBefore, h, kickAfterDrift, track};
     const ForceConstants c{speciesTable(params_), params_.stiffness, params_.appliedGravity(), kickAfter};
-    // One region; each thread owns a block of disks and the list rows that belong to them.
+    const ContactMode mode = contactModeOf(contacts);
+    const double d = params_.maxDiameter();
+    const double left = params_.left(), bottom = params_.bottom(), right = 0.5 * params_.boxWidth,
+                 top = params_.top();
+    std::vector<DriftOutcome> outcomes(static_cast<std::size_t>(omp_get_max_threads()));
 #pragma omp parallel if (static_cast <long long>(count) >= kParallelMinParticles)
     {
         const md::ParticleRange range = md::threadRange(count);
-        switch (contacts) {
-        case Contacts::Ignore:
-            energies ? forceBlock<ContactMode::Ignore, true>(a, c, range)
-                     : forceBlock<ContactMode::Ignore, false>(a, c, range);
-            break;
-        case Contacts::Count:
-            energies ? forceBlock<ContactMode::Count, true>(a, c, range)
-                     : forceBlock<ContactMode::Count, false>(a, c, range);
-            break;
-        case Contacts::Initialise:
-            energies ? forceBlock<ContactMode::Initialise, true>(a, c, range)
-                     : forceBlock<ContactMode::Initialise, false>(a, c, range);
-            break;
-        }
+        DriftOutcome mine;
+        md::driftBlock(walls, step, drift, range, mine.escaped, mine.worst);
+        outcomes[static_cast<std::size_t>(omp_get_thread_num())] = mine;
+#pragma omp barrier
+        double worst = 0.0;
+        for (const DriftOutcome& o : outcomes) worst = std::max(worst, o.worst);
+        if (!track || neighbours_.needsRebuild(worst))
+            neighbours_.buildInRegion(s.x.data(), s.y.data(), count, d, kSkinOverDiameter * d, left, bottom,
+                                      right, top);
+        forceBlockFor(mode, false, forceArrays(s, neighbours_), c, range);
     }
+    for (const DriftOutcome& o : outcomes) escaped_ = escaped_ || o.escaped;
+    ++driftIndex_;
+    maxDisplacement2_ = -1.0;
+    forcesValid_ = true;
+    energiesValid_ = false;
 }
 
 void MdModel::computeForcesAllPairs(Contacts contacts, double kickAfter) {

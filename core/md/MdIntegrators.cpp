@@ -47,9 +47,21 @@ void MdModel::boundaryStage(double h) {
     ++driftIndex_;
 }
 
-// The integrator table's fused passes (MdIntegratorTable.h): one pass over the particles each.
+// The integrator table's fused passes (MdIntegratorTable.h): one pass over the particles each, and a
+// drift with the force pass after it in one parallel region.
 void MdModel::runPasses(const std::vector<MdPass>& passes, double h) {
-    for (const MdPass& pass : passes) {
+    for (std::size_t p = 0; p < passes.size(); ++p) {
+        const MdPass& pass = passes[p];
+        const MdPass* next = p + 1 < passes.size() ? &passes[p + 1] : nullptr;
+        if (pass.kind == MdPass::Kind::Drift && next && next->kind == MdPass::Kind::Forces &&
+            params_.forceMethod != MdForceMethod::AllPairs) {
+            driftThenForces(stepFraction(pass.kickBefore, h), stepFraction(pass.drift, h),
+                            stepFraction(pass.kickAfter, h),
+                            next->countContacts ? Contacts::Count : Contacts::Ignore,
+                            stepFraction(next->kickAfter, h));
+            ++p;
+            continue;
+        }
         switch (pass.kind) {
         case MdPass::Kind::Drift:
             driftStage(stepFraction(pass.kickBefore, h), stepFraction(pass.drift, h),
