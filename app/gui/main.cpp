@@ -23,16 +23,23 @@
 namespace {
 
 // The desktop app shares its cores with the display: the GL rasteriser (on a machine without a GPU),
-// the X server, the compositor. OpenMP workers that spin at a barrier for milliseconds before they
-// sleep (libgomp's default) starve them, and a worker the scheduler sets aside stalls every step
-// (BENCHMARKS.md, "App frame rate": 49 against 20 fps on a loaded machine). So the app runs its workers
-// passive unless the user set OMP_WAIT_POLICY. libgomp reads the variable once, when it loads, before
-// main: the process starts itself again with it set (same pid, same arguments).
-void runOpenMpWorkersPassive(char** argv) {
+// the X server, the compositor. OpenMP workers that spin at a barrier for up to milliseconds before they
+// sleep (libgomp's default, 300 000 spins) starve them, and a worker the scheduler sets aside stalls
+// every step. Spinning 3000 times (tens of µs) still catches the barriers inside a step, then sleeps
+// (BENCHMARKS.md, "App frame rate": gas-seed 59–62 fps against 35 by default on an idle machine, 32
+// against 9 beside two busy processes). libgomp reads GOMP_SPINCOUNT and OMP_WAIT_POLICY once, when it
+// loads, before main: unless the user set either, the process starts itself again with the spin count
+// set (same pid, same arguments).
+void spinOpenMpWorkersBriefly(char** argv) {
 #ifdef __linux__
-    if (std::getenv("OMP_WAIT_POLICY")) return;
-    setenv("OMP_WAIT_POLICY", "passive", 1);
-    execv("/proc/self/exe", argv); // returns only on failure: then go on with the default policy
+    if (std::getenv("OMP_WAIT_POLICY") || std::getenv("GOMP_SPINCOUNT")) return;
+    // The binary's own path rather than /proc/self/exe, so the process keeps its name ("exe" otherwise).
+    char path[4096];
+    const ssize_t length = readlink("/proc/self/exe", path, sizeof path - 1);
+    if (length <= 0) return;
+    path[length] = '\0';
+    setenv("GOMP_SPINCOUNT", "3000", 1);
+    execv(path, argv); // returns only on failure: then go on with the default policy
 #else
     (void)argv;
 #endif
@@ -41,7 +48,7 @@ void runOpenMpWorkersPassive(char** argv) {
 } // namespace
 
 int main(int argc, char** argv) {
-    runOpenMpWorkersPassive(argv);
+    spinOpenMpWorkersBriefly(argv);
     // The GPU models' context shares buffers with the viewports (ui/viewport/QtGlContext.h).
     QApplication::setAttribute(Qt::AA_ShareOpenGLContexts);
     QApplication app(argc, argv);
