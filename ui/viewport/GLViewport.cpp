@@ -9,23 +9,27 @@
 namespace pl::ui {
 
 GLViewport::GLViewport(SimulationController* controller, QWidget* parent)
-    : QWidget(parent), core_(new ViewportCore(controller, this)), window_(new ViewportWindow(core_)) {
+    : QWidget(parent), core_(new ViewportCore(controller, this)), window_(new ViewportWindow(core_)),
+      container_(createWindowContainer(window_, this)) {
     setFocusPolicy(Qt::StrongFocus); // the window's keys start here, and a click brings them back
     // The native window covers this widget: it paints nothing of its own.
     setAttribute(Qt::WA_OpaquePaintEvent);
     setAttribute(Qt::WA_NoSystemBackground);
-    QWidget* container = createWindowContainer(window_, this);
     // Input passes through the window and the container to this widget, where ViewportCore's event
     // filter and the window's shortcuts see it; focus stays here.
-    container->setAttribute(Qt::WA_TransparentForMouseEvents);
-    container->setFocusPolicy(Qt::NoFocus);
+    container_->setAttribute(Qt::WA_TransparentForMouseEvents);
+    container_->setFocusPolicy(Qt::NoFocus);
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
-    layout->addWidget(container);
+    layout->addWidget(container_);
     core_->setFrameRequest([this] { window_->update(); });
     connect(controller, &SimulationController::frameAdvanced, window_, &ViewportWindow::frameAdvanced);
     connect(controller, &SimulationController::modelReplaced, window_,
             qOverload<>(&QPaintDeviceWindow::update));
+}
+
+GLViewport::~GLViewport() {
+    delete container_; // the window, whose GL clean-up reaches into core_, before core_ goes
 }
 
 long long GLViewport::framesFromGpuBuffers() const {

@@ -16,6 +16,7 @@ class GLViewport : public QWidget {
     Q_OBJECT
 public:
     explicit GLViewport(SimulationController* controller, QWidget* parent = nullptr);
+    ~GLViewport() override;
     ViewportCore* core() const { return core_; }
     // Frames whose particles came straight from a GPU model's buffers (no copy through the CPU).
     long long framesFromGpuBuffers() const;
@@ -26,6 +27,7 @@ public:
 private:
     ViewportCore* core_;
     ViewportWindow* window_;
+    QWidget* container_; // owns window_
 };
 
 } // namespace pl::ui

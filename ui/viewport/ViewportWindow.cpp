@@ -102,6 +102,8 @@ ViewportWindow::ViewportWindow(ViewportCore* core)
 
 ViewportWindow::~ViewportWindow() {
     if (!isValid()) return;
+    // QOpenGLWindow's own destructor destroys the context after this one has run: no slot of ours then.
+    disconnect(context(), nullptr, this, nullptr);
     makeCurrent();
     releaseGL();
     doneCurrent();
