@@ -227,7 +227,6 @@ void ViewportWindow::drawParticles() {
 }
 
 void ViewportWindow::paintGL() {
-    releaseIdleWorkers();
     {
         const FramePartTimer timer(FramePart::Viewport);
         core_->beginPaint();
@@ -240,17 +239,12 @@ void ViewportWindow::paintGL() {
 }
 
 void ViewportWindow::frameAdvanced() {
-    // Right after the frame's steps, not when the paint comes (the window's update request arrives a
-    // few milliseconds later): spinning workers would hold the cores through that wait as well.
-    releaseIdleWorkers();
-    update();
-}
-
-void ViewportWindow::releaseIdleWorkers() {
     // A software rasteriser (Mesa llvmpipe) draws the frame on the CPU cores that the model's OpenMP
-    // workers keep spinning on, waiting for the next step (libgomp spins for milliseconds before it
-    // sleeps): let them go, so the frame gets the cores. The next step starts them again (tens of µs).
+    // workers keep spinning on, waiting for the next step: let them go right after the frame's steps (the
+    // paint comes a few milliseconds later, when the window's update request is answered), so the frame
+    // gets the cores. The next step starts them again (tens of µs).
     if (softwareRasteriser_) omp_pause_resource_all(omp_pause_soft);
+    update();
 }
 
 QImage ViewportWindow::renderImage() {

@@ -39,7 +39,6 @@ protected:
 private:
     void contextGoingAway();
     void releaseGL();
-    void releaseIdleWorkers();
     // Draws the frame into the bound framebuffer of the given device's size.
     void paintFrame(QPaintDevice& device);
     void drawParticles();
