@@ -81,25 +81,34 @@ void Neighbours::buildLanePairs(const double* x, const double* y, std::size_t co
     search(x, y, count, reach, width, height);
     const std::size_t blocks = (count + 1) / 2;
     const std::size_t stride = capacity_ + 1;
+    // Partners in cell order: neighbouring particles see about the same number of neighbours, so the
+    // padding of the shorter row shrinks (index order pairs particles poured in one after the other).
+    const std::uint32_t* order = cells_.order().data();
+    blockParticles_.resize(2 * blocks);
     blockStart_.resize(blocks + 1);
     blockStart_[0] = 0;
     for (std::size_t b = 0; b < blocks; ++b) {
-        const std::size_t second = std::min(2 * b + 1, count - 1);
-        blockStart_[b + 1] = blockStart_[b] + std::max(counts_[2 * b], counts_[second]);
+        const std::uint32_t first = order[2 * b], second = order[std::min(2 * b + 1, count - 1)];
+        blockParticles_[2 * b] = first;
+        blockParticles_[2 * b + 1] = second;
+        blockStart_[b + 1] = blockStart_[b] + std::max(counts_[first], counts_[second]);
     }
     laneEntries_.resize(2 * static_cast<std::size_t>(blockStart_[blocks]));
-    const std::uint32_t *rows = rows_.data(), *counts = counts_.data(), *blockStart = blockStart_.data();
-    std::uint32_t* lanes = laneEntries_.data();
+    rowStart_.resize(count);
+    const std::uint32_t *rows = rows_.data(), *counts = counts_.data(), *blockStart = blockStart_.data(),
+                        *particles = blockParticles_.data();
+    std::uint32_t *lanes = laneEntries_.data(), *rowStart = rowStart_.data();
     const auto blockCount = static_cast<long long>(blocks);
 #pragma omp parallel for schedule(static) if (static_cast <long long>(count) >= kParallelMinParticles)
     for (long long b = 0; b < blockCount; ++b) {
         const std::uint32_t length = blockStart[b + 1] - blockStart[b];
-        std::uint32_t* slots = lanes + 2 * static_cast<std::size_t>(blockStart[b]);
-        for (int lane = 0; lane < 2; ++lane) {
-            const std::size_t i = std::min(2 * static_cast<std::size_t>(b) + lane, count - 1);
-            const std::uint32_t* row = rows + i * stride;
-            for (std::uint32_t t = 0; t < length; ++t)
-                slots[2 * t + lane] = t < counts[i] ? row[t] : static_cast<std::uint32_t>(i);
+        const std::size_t first = 2 * static_cast<std::size_t>(blockStart[b]);
+        for (int lane = 1; lane >= 0; --lane) { // lane 0 last: a lone particle's row starts in lane 0
+            const std::uint32_t i = particles[2 * b + lane];
+            const std::uint32_t* row = rows + std::size_t{i} * stride;
+            std::uint32_t* slots = lanes + first + lane;
+            for (std::uint32_t t = 0; t < length; ++t) slots[2 * t] = t < counts[i] ? row[t] : i;
+            rowStart[i] = static_cast<std::uint32_t>(first + lane);
         }
     }
 }

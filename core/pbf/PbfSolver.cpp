@@ -55,11 +55,10 @@ namespace {
 // The two particles of lane-pair block b (the same one twice in an odd count's last block).
 struct BlockPair {
     std::uint32_t first, second;
-    BlockPair(long long b, long long count)
-        : first(static_cast<std::uint32_t>(2 * b)),
-          second(static_cast<std::uint32_t>(std::min(2 * b + 1, count - 1))) {}
-    pbf::Lanes gather(const double* values) const { return pbf::Lanes::gather(values, first, second); }
-    void scatter(pbf::Lanes v, double* values) const {
+    BlockPair(const pbf::Neighbours& list, long long b)
+        : first(list.blockParticles()[2 * b]), second(list.blockParticles()[2 * b + 1]) {}
+    Lanes gather(const double* values) const { return Lanes::gather(values, first, second); }
+    void scatter(Lanes v, double* values) const {
         values[first] = v.lane0();
         if (second != first) values[second] = v.lane1(); // a lone particle fills both lanes alike
     }
@@ -91,23 +90,22 @@ void PbfModel::computeLambdas(std::size_t iteration) {
     double *sumGx = gradSumX_.data(), *sumGy = gradSumY_.data(), *sumSx = scorrSumX_.data(),
            *sumSy = scorrSumY_.data();
     const pbf::LaneKernels k(kernels_, scorr_);
-    const pbf::Lanes selfWeight = pbf::Lanes::all(kernels_.selfWeight());
-    const pbf::Lanes inverseRest = pbf::Lanes::all(1.0 / restDensity_), one = pbf::Lanes::all(1.0);
-    const pbf::Lanes epsilon = pbf::Lanes::all(params_.epsilon), zero = pbf::Lanes::all(0.0);
+    const Lanes selfWeight = Lanes::all(kernels_.selfWeight());
+    const Lanes inverseRest = Lanes::all(1.0 / restDensity_), one = Lanes::all(1.0);
+    const Lanes epsilon = Lanes::all(params_.epsilon), zero = Lanes::all(0.0);
 #pragma omp parallel for schedule(static) if (n >= kParallelMinParticles)
     for (long long b = 0; b < blocks; ++b) {
-        const BlockPair pair(b, n);
-        const pbf::Lanes xi = pair.gather(px), yi = pair.gather(py);
-        pbf::Lanes rho = selfWeight, gx = zero, gy = zero, sumSquares = zero, sx = zero, sy = zero;
+        const BlockPair pair(neighbours_, b);
+        const Lanes xi = pair.gather(px), yi = pair.gather(py);
+        Lanes rho = selfWeight, gx = zero, gy = zero, sumSquares = zero, sx = zero, sy = zero;
         for (std::size_t e = 2 * std::size_t{blockStart[b]}; e < 2 * std::size_t{blockStart[b + 1]}; e += 2) {
             const std::uint32_t j0 = lanes[e], j1 = lanes[e + 1];
-            const pbf::Lanes dx = xi - pbf::Lanes::gather(px, j0, j1),
-                             dy = yi - pbf::Lanes::gather(py, j0, j1);
-            const pbf::Lanes r2 = dx * dx + dy * dy;
-            const pbf::Lanes w = k.w(r2);
-            const pbf::Lanes f = k.gradFactor(r2); // both 0 beyond h
-            const pbf::Lanes s = k.artificialPressure(w);
-            const pbf::Lanes fx = f * dx, fy = f * dy;
+            const Lanes dx = xi - Lanes::gather(px, j0, j1), dy = yi - Lanes::gather(py, j0, j1);
+            const Lanes r2 = dx * dx + dy * dy;
+            const Lanes w = k.w(r2);
+            const Lanes f = k.gradFactor(r2); // both 0 beyond h
+            const Lanes s = k.artificialPressure(w);
+            const Lanes fx = f * dx, fy = f * dy;
             rho += w;
             fx.store(pgx + e);
             fy.store(pgy + e);
@@ -117,7 +115,7 @@ void PbfModel::computeLambdas(std::size_t iteration) {
             sy += s * f * dy;
             sumSquares += f * f * r2;
         }
-        const pbf::Lanes c = rho * inverseRest - one;
+        const Lanes c = rho * inverseRest - one;
         pair.scatter(c, constraint);
         pair.scatter(-c / ((gx * gx + gy * gy + sumSquares) * inverseRest * inverseRest + epsilon), lambda);
         pair.scatter(gx, sumGx);
@@ -148,20 +146,20 @@ void PbfModel::applyPositionCorrections() {
                  *sumSy = scorrSumY_.data();
     double *nx = nextX_.data(), *ny = nextY_.data();
     const std::uint32_t *blockStart = neighbours_.blockStart(), *lanes = neighbours_.laneEntries();
-    const pbf::Lanes inverseRest = pbf::Lanes::all(1.0 / restDensity_);
+    const Lanes inverseRest = Lanes::all(1.0 / restDensity_);
     const pbf::Box box = confinementBox();
     const pbf::WallJitter jitter = wallJitter();
     const double margin = params_.particleRadius;
 #pragma omp parallel for schedule(static) if (n >= kParallelMinParticles)
     for (long long b = 0; b < blocks; ++b) {
-        const BlockPair pair(b, n);
-        const pbf::Lanes li = pair.gather(lambda);
-        pbf::Lanes sx = li * pair.gather(sumGx) + pair.gather(sumSx);
-        pbf::Lanes sy = li * pair.gather(sumGy) + pair.gather(sumSy);
+        const BlockPair pair(neighbours_, b);
+        const Lanes li = pair.gather(lambda);
+        Lanes sx = li * pair.gather(sumGx) + pair.gather(sumSx);
+        Lanes sy = li * pair.gather(sumGy) + pair.gather(sumSy);
         for (std::size_t e = 2 * std::size_t{blockStart[b]}; e < 2 * std::size_t{blockStart[b + 1]}; e += 2) {
-            const pbf::Lanes l = pbf::Lanes::gather(lambda, lanes[e], lanes[e + 1]);
-            sx += l * pbf::Lanes::load(pgx + e);
-            sy += l * pbf::Lanes::load(pgy + e);
+            const Lanes l = Lanes::gather(lambda, lanes[e], lanes[e + 1]);
+            sx += l * Lanes::load(pgx + e);
+            sy += l * Lanes::load(pgy + e);
         }
         pair.scatter(pair.gather(px) + sx * inverseRest, nx);
         pair.scatter(pair.gather(py) + sy * inverseRest, ny);
@@ -195,13 +193,13 @@ void PbfModel::applyVorticityConfinement() {
     omega_.resize(state_.size());
     const double *px = px_.data(), *py = py_.data();
     double *vx = state_.vx.data(), *vy = state_.vy.data(), *omega = omega_.data();
-    const std::uint32_t *blockStart = neighbours_.blockStart(), *lanes = neighbours_.laneEntries(),
+    const std::uint32_t *rowStart = neighbours_.rowStart(), *lanes = neighbours_.laneEntries(),
                         *counts = neighbours_.counts();
     const pbf::Kernels k = kernels_;
 #pragma omp parallel for schedule(static) if (n >= kParallelMinParticles)
     for (long long i = 0; i < n; ++i) {
         double w = 0;
-        const std::uint32_t* row = lanes + 2 * std::size_t{blockStart[i / 2]} + i % 2;
+        const std::uint32_t* row = lanes + rowStart[i];
         for (std::uint32_t t = 0; t < counts[i]; ++t) {
             const std::uint32_t j = row[2 * t];
             const double dx = px[i] - px[j], dy = py[i] - py[j];
@@ -216,7 +214,7 @@ void PbfModel::applyVorticityConfinement() {
 #pragma omp parallel for schedule(static) if (n >= kParallelMinParticles)
     for (long long i = 0; i < n; ++i) {
         double ex = 0, ey = 0;
-        const std::uint32_t* row = lanes + 2 * std::size_t{blockStart[i / 2]} + i % 2;
+        const std::uint32_t* row = lanes + rowStart[i];
         for (std::uint32_t t = 0; t < counts[i]; ++t) {
             const std::uint32_t j = row[2 * t];
             const double dx = px[i] - px[j], dy = py[i] - py[j];
@@ -233,30 +231,32 @@ void PbfModel::applyVorticityConfinement() {
     }
 }
 
-// Line 22, second half (eq. 17): XSPH viscosity v_i ← v_i + c Σ_j (v_j − v_i) W_ij.
+// Line 22, second half (eq. 17): XSPH viscosity v_i ← v_i + c Σ_j (v_j − v_i) W_ij, two particles per step
+// of the loop as in the λ pass; a padded slot has W = 0 and adds +0.
 void PbfModel::applyXsphViscosity() {
     const long long n = loopCount(state_);
+    const long long blocks = blockCount(neighbours_);
     nextVx_.resize(state_.size());
     nextVy_.resize(state_.size());
     const double *px = px_.data(), *py = py_.data(), *vx = state_.vx.data(), *vy = state_.vy.data();
     double *ox = nextVx_.data(), *oy = nextVy_.data();
-    const std::uint32_t *blockStart = neighbours_.blockStart(), *lanes = neighbours_.laneEntries(),
-                        *counts = neighbours_.counts();
-    const pbf::Kernels k = kernels_;
-    const double c = params_.xsph;
+    const std::uint32_t *blockStart = neighbours_.blockStart(), *lanes = neighbours_.laneEntries();
+    const pbf::LaneKernels k(kernels_, scorr_);
+    const Lanes c = Lanes::all(params_.xsph), zero = Lanes::all(0.0);
 #pragma omp parallel for schedule(static) if (n >= kParallelMinParticles)
-    for (long long i = 0; i < n; ++i) {
-        double sx = 0, sy = 0;
-        const std::uint32_t* row = lanes + 2 * std::size_t{blockStart[i / 2]} + i % 2;
-        for (std::uint32_t t = 0; t < counts[i]; ++t) {
-            const std::uint32_t j = row[2 * t];
-            const double dx = px[i] - px[j], dy = py[i] - py[j];
-            const double w = k.w(dx * dx + dy * dy);
-            sx += (vx[j] - vx[i]) * w;
-            sy += (vy[j] - vy[i]) * w;
+    for (long long b = 0; b < blocks; ++b) {
+        const BlockPair pair(neighbours_, b);
+        const Lanes xi = pair.gather(px), yi = pair.gather(py), ui = pair.gather(vx), wi = pair.gather(vy);
+        Lanes sx = zero, sy = zero;
+        for (std::size_t e = 2 * std::size_t{blockStart[b]}; e < 2 * std::size_t{blockStart[b + 1]}; e += 2) {
+            const std::uint32_t j0 = lanes[e], j1 = lanes[e + 1];
+            const Lanes dx = xi - Lanes::gather(px, j0, j1), dy = yi - Lanes::gather(py, j0, j1);
+            const Lanes w = k.w(dx * dx + dy * dy);
+            sx += (Lanes::gather(vx, j0, j1) - ui) * w;
+            sy += (Lanes::gather(vy, j0, j1) - wi) * w;
         }
-        ox[i] = vx[i] + c * sx;
-        oy[i] = vy[i] + c * sy;
+        pair.scatter(ui + c * sx, ox);
+        pair.scatter(wi + c * sy, oy);
     }
     state_.vx.swap(nextVx_);
     state_.vy.swap(nextVy_);
