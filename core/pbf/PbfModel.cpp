@@ -73,6 +73,7 @@ void PbfModel::step() {
         computeLambdas(k);
         applyPositionCorrections();
     }
+    leaveSolverNumbers();
     updateVelocities();
     if (params_.vorticity > 0) applyVorticityConfinement();
     if (params_.xsph > 0) applyXsphViscosity();

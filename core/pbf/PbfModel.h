@@ -77,6 +77,7 @@ protected:
     void findNeighbours();
     void computeLambdas(std::size_t iteration);
     void applyPositionCorrections();
+    void leaveSolverNumbers();
     void updateVelocities();
     void applyVorticityConfinement();
     void applyXsphViscosity();

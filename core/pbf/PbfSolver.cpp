@@ -46,17 +46,40 @@ void PbfModel::applyExternalForcesAndPredict() {
 
 // Lines 5–7: neighbours within the search radius (1.05 h in the seed) of the predicted positions, found
 // once and kept through the iterations; the corrections move particles by a fraction of h.
+// The iterations then run in solver numbers (PbfNeighbours.h): px_, py_ and every per-particle array of
+// the λ and Δx passes are in cell order until leaveSolverNumbers().
 void PbfModel::findNeighbours() {
     neighbours_.buildLanePairs(px_.data(), py_.data(), state_.size(), params_.neighbourRadius(),
                                params_.boxWidth, params_.boxHeight);
+    std::copy_n(neighbours_.sortedX(), state_.size(), px_.begin());
+    std::copy_n(neighbours_.sortedY(), state_.size(), py_.begin());
+}
+
+// The corrected positions back in particle numbers, for the velocity update and what follows.
+void PbfModel::leaveSolverNumbers() {
+    const long long n = loopCount(state_);
+    const std::uint32_t* rank = neighbours_.rank();
+    const double *px = px_.data(), *py = py_.data();
+    double *x = nextX_.data(), *y = nextY_.data();
+#pragma omp parallel for schedule(static) if (n >= kParallelMinParticles)
+    for (long long i = 0; i < n; ++i) {
+        x[i] = px[rank[i]];
+        y[i] = py[rank[i]];
+    }
+    px_.swap(nextX_);
+    py_.swap(nextY_);
 }
 
 namespace {
-// The two particles of lane-pair block b (the same one twice in an odd count's last block).
+// The two solver particles of lane-pair block b (the same one twice in an odd count's last block), or
+// their particle numbers.
 struct BlockPair {
     std::uint32_t first, second;
-    BlockPair(const pbf::Neighbours& list, long long b)
-        : first(list.blockParticles()[2 * b]), second(list.blockParticles()[2 * b + 1]) {}
+    BlockPair(long long b, long long count)
+        : first(static_cast<std::uint32_t>(2 * b)),
+          second(static_cast<std::uint32_t>(std::min(2 * b + 1, count - 1))) {}
+    BlockPair(BlockPair solver, const std::uint32_t* order)
+        : first(order[solver.first]), second(order[solver.second]) {}
     Lanes gather(const double* values) const { return Lanes::gather(values, first, second); }
     void scatter(Lanes v, double* values) const {
         values[first] = v.lane0();
@@ -64,9 +87,6 @@ struct BlockPair {
     }
 };
 
-long long blockCount(const pbf::Neighbours& list) {
-    return static_cast<long long>(list.blocks());
-}
 } // namespace
 
 // Lines 9–11: ρ_i = Σ_j W(x_i − x_j) (eq. 2), C_i = ρ_i/ρ₀ − 1 (eq. 1),
@@ -76,7 +96,6 @@ long long blockCount(const pbf::Neighbours& list) {
 // Two particles per step of the loop, each summing over its own row in row order (PbfKernels.h, Lanes).
 void PbfModel::computeLambdas(std::size_t iteration) {
     const long long n = loopCount(state_);
-    const long long blocks = blockCount(neighbours_);
     const double *px = px_.data(), *py = py_.data();
     double *lambda = lambda_.data(), *constraint = constraint_.data();
     const std::uint32_t *blockStart = neighbours_.blockStart(), *lanes = neighbours_.laneEntries();
@@ -93,9 +112,9 @@ void PbfModel::computeLambdas(std::size_t iteration) {
     const Lanes selfWeight = Lanes::all(kernels_.selfWeight());
     const Lanes inverseRest = Lanes::all(1.0 / restDensity_), one = Lanes::all(1.0);
     const Lanes epsilon = Lanes::all(params_.epsilon), zero = Lanes::all(0.0);
-#pragma omp parallel for schedule(static) if (n >= kParallelMinParticles)
-    for (long long b = 0; b < blocks; ++b) {
-        const BlockPair pair(neighbours_, b);
+#pragma omp parallel if (n >= kParallelMinParticles)
+    for (auto [b, end] = neighbours_.threadBlocks(); b < end; ++b) { // equal shares of the slots
+        const BlockPair pair(b, n);
         const Lanes xi = pair.gather(px), yi = pair.gather(py);
         Lanes rho = selfWeight, gx = zero, gy = zero, sumSquares = zero, sx = zero, sy = zero;
         for (std::size_t e = 2 * std::size_t{blockStart[b]}; e < 2 * std::size_t{blockStart[b + 1]}; e += 2) {
@@ -123,10 +142,11 @@ void PbfModel::computeLambdas(std::size_t iteration) {
         pair.scatter(sx, sumSx);
         pair.scatter(sy, sumSy);
     }
-    // Serial sums: the same bits for any thread count.
+    // Serial sums in particle order: the same bits for any thread count.
+    const std::uint32_t* rank = neighbours_.rank();
     double sum = 0, largest = 0;
     for (long long i = 0; i < n; ++i) {
-        const double compression = std::max(constraint[i], 0.0);
+        const double compression = std::max(constraint[rank[i]], 0.0);
         sum += compression;
         largest = std::max(largest, compression);
     }
@@ -139,20 +159,20 @@ void PbfModel::computeLambdas(std::size_t iteration) {
 // neighbours' positions of this iteration. A padded slot holds ∇W = 0 and adds nothing.
 void PbfModel::applyPositionCorrections() {
     const long long n = loopCount(state_);
-    const long long blocks = blockCount(neighbours_);
     const double *px = px_.data(), *py = py_.data(), *lambda = lambda_.data();
     const double *pgx = pairGradX_.data(), *pgy = pairGradY_.data();
     const double *sumGx = gradSumX_.data(), *sumGy = gradSumY_.data(), *sumSx = scorrSumX_.data(),
                  *sumSy = scorrSumY_.data();
     double *nx = nextX_.data(), *ny = nextY_.data();
-    const std::uint32_t *blockStart = neighbours_.blockStart(), *lanes = neighbours_.laneEntries();
+    const std::uint32_t *blockStart = neighbours_.blockStart(), *lanes = neighbours_.laneEntries(),
+                        *order = neighbours_.order();
     const Lanes inverseRest = Lanes::all(1.0 / restDensity_);
     const pbf::Box box = confinementBox();
     const pbf::WallJitter jitter = wallJitter();
     const double margin = params_.particleRadius;
-#pragma omp parallel for schedule(static) if (n >= kParallelMinParticles)
-    for (long long b = 0; b < blocks; ++b) {
-        const BlockPair pair(neighbours_, b);
+#pragma omp parallel if (n >= kParallelMinParticles)
+    for (auto [b, end] = neighbours_.threadBlocks(); b < end; ++b) { // equal shares of the slots
+        const BlockPair pair(b, n);
         const Lanes li = pair.gather(lambda);
         Lanes sx = li * pair.gather(sumGx) + pair.gather(sumSx);
         Lanes sy = li * pair.gather(sumGy) + pair.gather(sumSy);
@@ -163,9 +183,11 @@ void PbfModel::applyPositionCorrections() {
         }
         pair.scatter(pair.gather(px) + sx * inverseRest, nx);
         pair.scatter(pair.gather(py) + sy * inverseRest, ny);
-        pbf::confine(box, obstacles_, margin, jitter, pair.first, nx[pair.first], ny[pair.first]);
+        // The wall jitter is keyed by the particle number.
+        pbf::confine(box, obstacles_, margin, jitter, order[pair.first], nx[pair.first], ny[pair.first]);
         if (pair.second != pair.first)
-            pbf::confine(box, obstacles_, margin, jitter, pair.second, nx[pair.second], ny[pair.second]);
+            pbf::confine(box, obstacles_, margin, jitter, order[pair.second], nx[pair.second],
+                         ny[pair.second]);
     }
     px_.swap(nextX_);
     py_.swap(nextY_);
@@ -193,15 +215,17 @@ void PbfModel::applyVorticityConfinement() {
     omega_.resize(state_.size());
     const double *px = px_.data(), *py = py_.data();
     double *vx = state_.vx.data(), *vy = state_.vy.data(), *omega = omega_.data();
-    const std::uint32_t *rowStart = neighbours_.rowStart(), *lanes = neighbours_.laneEntries(),
-                        *counts = neighbours_.counts();
+    const std::uint32_t *lanes = neighbours_.laneEntries(), *counts = neighbours_.counts(),
+                        *order = neighbours_.order(), *rank = neighbours_.rank();
+    const pbf::Neighbours& list = neighbours_;
     const pbf::Kernels k = kernels_;
 #pragma omp parallel for schedule(static) if (n >= kParallelMinParticles)
     for (long long i = 0; i < n; ++i) {
         double w = 0;
-        const std::uint32_t* row = lanes + rowStart[i];
-        for (std::uint32_t t = 0; t < counts[i]; ++t) {
-            const std::uint32_t j = row[2 * t];
+        const std::uint32_t solver = rank[i];
+        const std::uint32_t* row = lanes + list.rowStart(solver);
+        for (std::uint32_t t = 0; t < counts[solver]; ++t) {
+            const std::uint32_t j = order[row[2 * t]];
             const double dx = px[i] - px[j], dy = py[i] - py[j];
             const double f = k.gradFactor(dx * dx + dy * dy); // ∇_i W = f (dx, dy); ∇_j W = −∇_i W
             const double ux = vx[j] - vx[i], uy = vy[j] - vy[i];
@@ -214,9 +238,10 @@ void PbfModel::applyVorticityConfinement() {
 #pragma omp parallel for schedule(static) if (n >= kParallelMinParticles)
     for (long long i = 0; i < n; ++i) {
         double ex = 0, ey = 0;
-        const std::uint32_t* row = lanes + rowStart[i];
-        for (std::uint32_t t = 0; t < counts[i]; ++t) {
-            const std::uint32_t j = row[2 * t];
+        const std::uint32_t solver = rank[i];
+        const std::uint32_t* row = lanes + list.rowStart(solver);
+        for (std::uint32_t t = 0; t < counts[solver]; ++t) {
+            const std::uint32_t j = order[row[2 * t]];
             const double dx = px[i] - px[j], dy = py[i] - py[j];
             const double f = k.gradFactor(dx * dx + dy * dy) * (std::abs(omega[j]) - std::abs(omega[i]));
             ex += f * dx;
@@ -235,21 +260,22 @@ void PbfModel::applyVorticityConfinement() {
 // of the loop as in the λ pass; a padded slot has W = 0 and adds +0.
 void PbfModel::applyXsphViscosity() {
     const long long n = loopCount(state_);
-    const long long blocks = blockCount(neighbours_);
     nextVx_.resize(state_.size());
     nextVy_.resize(state_.size());
     const double *px = px_.data(), *py = py_.data(), *vx = state_.vx.data(), *vy = state_.vy.data();
     double *ox = nextVx_.data(), *oy = nextVy_.data();
-    const std::uint32_t *blockStart = neighbours_.blockStart(), *lanes = neighbours_.laneEntries();
+    const std::uint32_t *blockStart = neighbours_.blockStart(), *lanes = neighbours_.laneEntries(),
+                        *order = neighbours_.order();
     const pbf::LaneKernels k(kernels_, scorr_);
     const Lanes c = Lanes::all(params_.xsph), zero = Lanes::all(0.0);
-#pragma omp parallel for schedule(static) if (n >= kParallelMinParticles)
-    for (long long b = 0; b < blocks; ++b) {
-        const BlockPair pair(neighbours_, b);
+    // After leaveSolverNumbers(): particle numbers, the rows' solver numbers translated through order.
+#pragma omp parallel if (n >= kParallelMinParticles)
+    for (auto [b, end] = neighbours_.threadBlocks(); b < end; ++b) { // equal shares of the slots
+        const BlockPair pair(BlockPair(b, n), order);
         const Lanes xi = pair.gather(px), yi = pair.gather(py), ui = pair.gather(vx), wi = pair.gather(vy);
         Lanes sx = zero, sy = zero;
         for (std::size_t e = 2 * std::size_t{blockStart[b]}; e < 2 * std::size_t{blockStart[b + 1]}; e += 2) {
-            const std::uint32_t j0 = lanes[e], j1 = lanes[e + 1];
+            const std::uint32_t j0 = order[lanes[e]], j1 = order[lanes[e + 1]];
             const Lanes dx = xi - Lanes::gather(px, j0, j1), dy = yi - Lanes::gather(py, j0, j1);
             const Lanes w = k.w(dx * dx + dy * dy);
             sx += (Lanes::gather(vx, j0, j1) - ui) * w;
