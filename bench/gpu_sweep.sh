@@ -11,5 +11,6 @@
 set -euo pipefail
 bench="${BENCH:-build/app/particlelab-bench}"
 out="${1:-gpu-sweep.jsonl}"
+shift $(($# > 0 ? 1 : 0)) # further arguments go to particlelab-bench (e.g. --force-lanes 0 1 8)
 command -v nvidia-smi >/dev/null && nvidia-smi --query-gpu=name,driver_version,memory.total --format=csv,noheader
-"$bench" --out "$out"
+"$bench" --out "$out" "$@"

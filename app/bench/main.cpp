@@ -65,6 +65,12 @@ int main(int argc, char** argv) {
     app.add_option("--settle", settings.maxSettleSeconds,
                    "Longest seconds a point steps before its repeats, until two batches agree within 3 %");
     app.add_option("--out", out, "Also write the JSON lines to this file");
+    std::vector<unsigned> forceLanes{0};
+    app.add_option(
+           "--force-lanes", forceLanes,
+           "Invocations per disk in the gas's force pass, each timed: 0 (automatic) or a power of two "
+           "up to 32")
+        ->check(CLI::IsMember({0u, 1u, 2u, 4u, 8u, 16u, 32u}));
     bool glDebug = false, profileEach = false;
     app.add_flag("--profile-each", profileEach,
                  "After timing each GPU gas point, profile its passes on the same model (timestamps)");
@@ -126,25 +132,32 @@ int main(int argc, char** argv) {
                                                          : pl::gl::scaledTunnelPreset(n);
             for (const std::string backend : {"gl", "cpu"}) {
                 if (backend == "cpu" && n > cpuMax) continue;
-                auto choice = pl::gl::createModel(scene, pl::gl::backendFromName(backend), &preset, context);
-                if (!choice.message.empty()) std::cerr << choice.message << '\n';
-                const auto p = pl::gl::timeModel(*choice.model, scene, backend, settings);
-                const bool gpu = backend == "gl";
-                emit({{"scene", scene},
-                      {"backend", backend},
-                      {"particles", p.particles},
-                      {"particle_steps_per_s", p.particleStepsPerSecond},
-                      {"us_per_step", p.microsecondsPerStep},
-                      {"dispatches_per_step", p.dispatchesPerStep},
-                      {"issue_us_per_step", p.issueMicrosecondsPerStep},
-                      {"repeat_us_per_step", p.repeatMicrosecondsPerStep},
-                      {"settle_s", p.settleSeconds},
-                      {"model_bytes_per_particle_step", gpu ? bytes : 0.0},
-                      {"achieved_bandwidth_fraction", gpu ? p.particleStepsPerSecond * bytes / copy : 0.0},
-                      {"goal_particle_steps_per_s", goal}});
-                points.push_back(p);
-                if (auto* gas = dynamic_cast<pl::gl::MdModelGL*>(choice.model.get()); gas && profileEach)
-                    profilePasses(*gas, n);
+                const bool gpuGas = backend == "gl" && scene == "gas";
+                for (unsigned lanes : gpuGas ? forceLanes : std::vector<unsigned>{0}) {
+                    auto choice =
+                        pl::gl::createModel(scene, pl::gl::backendFromName(backend), &preset, context);
+                    if (!choice.message.empty()) std::cerr << choice.message << '\n';
+                    auto* gas = dynamic_cast<pl::gl::MdModelGL*>(choice.model.get());
+                    if (gas) gas->setForceLanesPerDisk(lanes);
+                    const auto p = pl::gl::timeModel(*choice.model, scene, backend, settings);
+                    const bool gpu = backend == "gl";
+                    emit(
+                        {{"scene", scene},
+                         {"force_lanes_per_disk", gas ? gas->forceLanesPerDisk() : 0u},
+                         {"backend", backend},
+                         {"particles", p.particles},
+                         {"particle_steps_per_s", p.particleStepsPerSecond},
+                         {"us_per_step", p.microsecondsPerStep},
+                         {"dispatches_per_step", p.dispatchesPerStep},
+                         {"issue_us_per_step", p.issueMicrosecondsPerStep},
+                         {"repeat_us_per_step", p.repeatMicrosecondsPerStep},
+                         {"settle_s", p.settleSeconds},
+                         {"model_bytes_per_particle_step", gpu ? bytes : 0.0},
+                         {"achieved_bandwidth_fraction", gpu ? p.particleStepsPerSecond * bytes / copy : 0.0},
+                         {"goal_particle_steps_per_s", goal}});
+                    points.push_back(p);
+                    if (gas && profileEach) profilePasses(*gas, n);
+                }
             }
         }
     };

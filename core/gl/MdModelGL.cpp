@@ -9,6 +9,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
+#include <string>
 
 namespace pl::gl {
 
@@ -23,6 +25,12 @@ constexpr unsigned kFineBins = 4096;     // KS distance from a histogram this fi
 constexpr double kFineSigmas = 10.0;     // fine bins span 0 … 10 √(kT/m)
 constexpr double kParticlesPerCell = 2.0;
 constexpr std::int64_t kHealthInterval = 64; // as the CPU model's energy check
+// md_forces.comp: invocations per disk, doubled up to 8 until the pass has this many, so that a small
+// gas spreads over the GPU's multiprocessors (H200: 132) instead of a few work groups. On the H200
+// (bench/results/h200-gas-lanes-*.jsonl) 8 lanes took the 4096-disk step from 23.3 to 17.8 µs, 16 384
+// disks were fastest with 8, 65 536 with 2, and 262 144 with 1 or 2; more than 8 gained nothing.
+constexpr std::size_t kForceInvocationsWanted = 131072;
+constexpr unsigned kMaxAutomaticForceLanes = 8, kMaxForceLanes = 32; // the shader's work group is 128
 
 } // namespace
 
@@ -270,11 +278,28 @@ void MdModelGL::drift(double kickBefore, double h, double kickAfter) {
     ++driftIndex_;
 }
 
+void MdModelGL::setForceLanesPerDisk(unsigned lanes) {
+    if (lanes > kMaxForceLanes || (lanes & (lanes - 1)) != 0)
+        throw std::invalid_argument("invocations per disk must be 0 (automatic) or a power of two up to " +
+                                    std::to_string(kMaxForceLanes) + ", not " + std::to_string(lanes));
+    forceLanes_ = lanes;
+}
+
+unsigned MdModelGL::forceLanesPerDisk() const {
+    if (forceLanes_ != 0) return forceLanes_;
+    if (contextInfo().software) return 1; // more invocations only add work for a few CPU cores
+    unsigned lanes = 1;
+    while (lanes < kMaxAutomaticForceLanes && gpu_->count * lanes < kForceInvocationsWanted) lanes *= 2;
+    return lanes;
+}
+
 void MdModelGL::forces(bool countContacts, double kick, bool energies) {
     MdGpu& g = *gpu_;
     ComputeProgram& p = g.forces;
     p.use();
+    const unsigned lanes = forceLanesPerDisk();
     p.set("count", unsigned(g.count));
+    p.set("lanesPerDisk", lanes);
     p.set("stiffness", float(params_.stiffness));
     p.set("gravity", float(params_.appliedGravity()));
     p.set("speciesDiameter", float(params_.a.diameter), float(params_.b.diameter));
@@ -288,7 +313,7 @@ void MdModelGL::forces(bool countContacts, double kick, bool energies) {
     g.grid.starts().bind(8);
     g.status.bind(10);
     g.energy.bind(12);
-    p.dispatch(g.count, kForceLocal);
+    p.dispatch(g.count * lanes, kForceLocal);
     storageBarrier();
     g.mark("forces");
     g.pendingKick = kick;

@@ -39,6 +39,11 @@ public:
     std::vector<std::pair<std::string, double>> profile() const;
     // The counting-sort grid of the last step (tests check the order against it).
     const GpuCellGrid& cellGrid() const;
+    // Invocations that share a disk in the force pass (md_forces.comp): a power of two up to 32, or 0
+    // (the default) to choose by the gas's size, one on a software rasteriser, whose invocations run on
+    // the CPU's few cores. Throws std::invalid_argument for other counts. For the benchmark and the tests.
+    void setForceLanesPerDisk(unsigned lanes);
+    unsigned forceLanesPerDisk() const; // what the next force pass uses
 
 private:
     void createBuffers();
@@ -50,6 +55,7 @@ private:
     void checkGpuHealth();
 
     std::unique_ptr<MdGpu> gpu_;
+    unsigned forceLanes_ = 0; // 0: automatic
 };
 
 } // namespace pl::gl

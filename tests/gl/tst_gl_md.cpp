@@ -123,9 +123,13 @@ private slots:
     void oneStepMatchesCpu_data() {
         QTest::addColumn<QString>("integrator");
         QTest::addColumn<double>("disks");
+        QTest::addColumn<unsigned>("forceLanes"); // invocations per disk in the force pass (0: automatic)
         for (const char* name : {"velocity-verlet", "symplectic-euler", "explicit-euler", "forest-ruth"})
-            QTest::newRow(name) << QString(name) << 1600.0;
-        QTest::newRow("velocity-verlet, 3-dispatch sort") << QString("velocity-verlet") << 9000.0;
+            QTest::newRow(name) << QString(name) << 1600.0 << 0u;
+        QTest::newRow("velocity-verlet, 3-dispatch sort") << QString("velocity-verlet") << 9000.0 << 0u;
+        for (unsigned lanes : {2u, 8u, 32u})
+            QTest::newRow(qPrintable(QString("forest-ruth, %1 invocations per disk").arg(lanes)))
+                << QString("forest-ruth") << 1600.0 << lanes;
     }
 
     // float32 tolerances: positions of magnitude ≤ 1 carry ≤ 6e-8 rounding each, so a pair distance is
@@ -135,11 +139,13 @@ private slots:
     void oneStepMatchesCpu() {
         QFETCH(QString, integrator);
         QFETCH(double, disks);
+        QFETCH(unsigned, forceLanes);
         const Preset preset = denseGas(integrator.toStdString(), disks);
         MdModel cpu;
         cpu.reset(preset);
         MdModelGL gpu(context_);
         gpu.reset(preset);
+        gpu.setForceLanesPerDisk(forceLanes);
         for (int s = 0; s < 3; ++s) {
             cpu.step();
             gpu.step();
@@ -200,10 +206,12 @@ private slots:
         QVERIFY(!gpu.failure());
     }
 
-    // The GPU's sums and histograms of one state against the CPU's of the same state.
+    // The GPU's sums and histograms of one state against the CPU's of the same state; the energies
+    // through the force pass's lane sums (8 invocations per disk).
     void reductionsAndHistogramsMatchCpu() {
         MdModelGL gpu(context_);
         gpu.reset(denseGas("velocity-verlet"));
+        gpu.setForceLanesPerDisk(8);
         for (int s = 0; s < 20; ++s) gpu.step();
         std::vector<MdParticle> particles;
         const MdState& s = gpu.state();
@@ -229,6 +237,17 @@ private slots:
         QVERIFY2(differ <= 4, "only speeds within float rounding of a bin edge may land differently");
         QCOMPARE(hg[0].counts.total(), hc[0].counts.total());
         QCOMPARE(hg[0].name, hc[0].name);
+    }
+
+    void forceLanesAreChosenOrRefused() {
+        MdModelGL gpu(context_);
+        gpu.reset(denseGas("velocity-verlet"));
+        QCOMPARE(gpu.forceLanesPerDisk(), context_->info().software ? 1u : 8u); // 1600 disks: spread them
+        gpu.setForceLanesPerDisk(4);
+        QCOMPARE(gpu.forceLanesPerDisk(), 4u);
+        QVERIFY_THROWS_EXCEPTION(std::invalid_argument, gpu.setForceLanesPerDisk(3));
+        QVERIFY_THROWS_EXCEPTION(std::invalid_argument, gpu.setForceLanesPerDisk(64));
+        QCOMPARE(gpu.forceLanesPerDisk(), 4u); // a refused count changes nothing
     }
 
     void blowUpIsCaughtOnTheGpu() {
