@@ -1,8 +1,8 @@
-// Two doubles per operation for the CPU pair loops: the fluid's passes run two particles side by side,
-// each lane walking its own neighbour row. Every lane performs
-// exactly the scalar operations, in the same order (SSE2 has no fused multiply-add, and its square root
-// and division are correctly rounded, as IEEE scalar ones are), so the results are the scalar ones bit for
-// bit at any lane or thread count. Without SSE2, the same operations one lane at a time.
+// Two doubles per operation for the CPU pair loops: the fluid's passes run two particles side by side, each
+// lane walking its own neighbour row. Every lane performs exactly the scalar operations, in the same order
+// (SSE2 has no fused multiply-add, and its square root and division are correctly rounded, as IEEE scalar
+// ones are), so the results are the scalar ones bit for bit at any lane or thread count. Without SSE2, the
+// same operations one lane at a time.
 #pragma once
 
 #include <cmath>
