@@ -75,7 +75,13 @@ int main(int argc, char** argv) {
     app.add_flag("--profile-each", profileEach,
                  "After timing each GPU gas point, profile its passes on the same model (timestamps)");
     app.add_flag("--gl-debug", glDebug, "Print the driver's debug messages (performance remarks)");
-    CLI11_PARSE(app, argc, argv);
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        if (e.get_exit_code() == 0) return app.exit(e); // --help: the help text, exit 0
+        std::cerr << "particlelab-bench: " << e.what() << "; see 'particlelab-bench --help'\n";
+        return 2; // a bad option, as particlelab-cli answers it
+    }
 
     std::ofstream file;
     if (!out.empty()) file.open(out);

@@ -1,4 +1,5 @@
-// Runs particlelab-cli as a user does, for the CLI's tests: exit code, signal, output, with a time limit.
+// Runs particlelab-cli (or another of the headless programs) as a user does, for the CLI's tests: exit
+// code, signal, output, with a time limit.
 #pragma once
 
 #include <QProcess>
@@ -15,10 +16,11 @@ struct CliResult {
     QString out, err;
 };
 
-inline CliResult runCli(const QStringList& args, int timeoutMs = 120000, const QString& workingDir = {}) {
+inline CliResult runProgram(const QString& program, const QStringList& args, int timeoutMs = 120000,
+                            const QString& workingDir = {}) {
     QProcess p;
     if (!workingDir.isEmpty()) p.setWorkingDirectory(workingDir);
-    p.start(PARTICLELAB_CLI, args);
+    p.start(program, args);
     CliResult r;
     if (!p.waitForStarted(timeoutMs)) {
         r.startError = p.errorString();
@@ -34,6 +36,10 @@ inline CliResult runCli(const QStringList& args, int timeoutMs = 120000, const Q
     r.out = QString::fromUtf8(p.readAllStandardOutput());
     r.err = QString::fromUtf8(p.readAllStandardError());
     return r;
+}
+
+inline CliResult runCli(const QStringList& args, int timeoutMs = 120000, const QString& workingDir = {}) {
+    return runProgram(PARTICLELAB_CLI, args, timeoutMs, workingDir);
 }
 
 } // namespace pl::test

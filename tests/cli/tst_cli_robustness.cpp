@@ -95,6 +95,26 @@ private slots:
         QVERIFY(r.err.size() < 600);
     }
 
+    // The GPU benchmark answers bad options as the CLI does, before it looks for a GL context.
+    void benchBadOptionsAreExit2WithASentence_data() {
+        QTest::addColumn<QStringList>("args");
+        QTest::addColumn<QString>("message");
+        QTest::newRow("force lanes 3") << QStringList{"--force-lanes", "3"} << "--force-lanes: 3 not in";
+        QTest::newRow("repeats abc") << QStringList{"--repeats", "abc"} << "--repeats";
+        QTest::newRow("unknown scene") << QStringList{"--scenes", "plasma"} << "--scenes: plasma not in";
+        QTest::newRow("unknown flag") << QStringList{"--bogus"} << "--bogus";
+    }
+    void benchBadOptionsAreExit2WithASentence() {
+        QFETCH(QStringList, args);
+        QFETCH(QString, message);
+        const auto r = pl::test::runProgram(PARTICLELAB_BENCH, args, 30000);
+        QVERIFY2(r.startError.isEmpty(), qPrintable(r.startError));
+        QVERIFY(!r.crashed && !r.timedOut);
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.startsWith("particlelab-bench: ") && r.err.contains(message), qPrintable(r.err));
+        QVERIFY2(r.out.isEmpty(), qPrintable(r.out)); // nothing measured, no JSON line
+    }
+
     void helpStaysExit0() {
         const auto r = runCli({"run", "--help"});
         QCOMPARE(r.exitCode, 0);
