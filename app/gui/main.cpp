@@ -47,9 +47,10 @@ void spinOpenMpWorkersBriefly(char** argv) {
 
 // The viewport asks for a frame after each tick's steps (QWindow::requestUpdate), which Qt answers after
 // an idle timer of 5 ms by default. A tick whose steps take 10 ms then leaves no room for the paint and
-// the swap before the next tick, and a frame holds two ticks: fluid-obstacle drew 39 fps, 50 without the
-// idle time (BENCHMARKS.md, "fluid-obstacle's frame"). Only windows that paint through requestUpdate see
-// it (the viewport); widgets repaint through their own posted events. Unless the user set it.
+// the swap before the next tick, and a frame holds two ticks (BENCHMARKS.md, "fluid-obstacle's frame";
+// without the idle time fluid-obstacle drew 31–41 fps against 30–33, "Frames right after the steps").
+// Only windows that paint through requestUpdate see it (the viewport); widgets repaint through their own
+// posted events. Unless the user set it.
 void drawFramesRightAfterTheSteps() {
     if (!qEnvironmentVariableIsSet("QT_QPA_UPDATE_IDLE_TIME")) qputenv("QT_QPA_UPDATE_IDLE_TIME", "0");
 }
