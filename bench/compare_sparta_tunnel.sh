@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The wind tunnel against SPARTA on one case: a preset (default dsmc-cylinder: Mach 10 argon past a half
+# The wind tunnel against SPARTA on one case: a preset (default tunnel-cylinder: Mach 10 argon past a half
 # cylinder, ~48 000 molecules, collisions on) exported with `export sparta` and run in SPARTA serial and
 # in ParticleLab's CPU model (1 and 2 threads), repeats interleaved; prints the particle-moves per second
 # of each and the ratios (medians of REPEATS), then the physics of one longer run in both codes: drag
@@ -15,7 +15,7 @@ repeats=${1:-3}
 steps=${2:-1000}
 cli=${CLI:-./build/app/particlelab-cli}
 sparta=${SPARTA:-$(command -v spa_serial || true)}
-preset=${PRESET:-dsmc-cylinder}
+preset=${PRESET:-tunnel-cylinder}
 physics_steps=${PHYSICS_STEPS:-3000}
 seed=(${SEED:+--seed "$SEED"})
 [ -x "$cli" ] || { echo "build first: cmake --build build --target particlelab-cli" >&2; exit 1; }

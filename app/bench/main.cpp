@@ -1,9 +1,9 @@
 // particlelab-bench: the GPU benchmark runner. Links core + gl only (no Qt), so it runs headless on a
 // machine with nothing but a GL driver. Prints one JSON line per measurement and a table at the end.
 #include "gl/Backends.h"
+#include "gl/FluidModelGL.h"
+#include "gl/GasModelGL.h"
 #include "gl/MachineBenchmark.h"
-#include "gl/MdModelGL.h"
-#include "gl/PbfModelGL.h"
 
 #include <CLI/CLI.hpp>
 #include <epoxy/gl.h>
@@ -28,7 +28,7 @@ constexpr double kGasBytesPerParticleStep = 40 + 60 + 6 + 28;
 constexpr int kFluidIterations = 5;
 constexpr double kFluidBytesPerParticleStep = 28 + 52 + 3 + kFluidIterations * (12 + 20) + 24;
 
-// The tunnel's (dsmc-cylinder, collisions on): the move reads a molecule (position 8, velocity 8 + 4)
+// The tunnel's (tunnel-cylinder, collisions on): the move reads a molecule (position 8, velocity 8 + 4)
 // and writes it moved with its (cell, slot) (28) plus a 4-byte atomic; the scatter reads that and a
 // cell start (32) and writes the sorted molecule (20); the collide-and-sample pass reads each velocity
 // once for the sums (12; pair reads hit the cache within a cell, about one accepted pair per molecule
@@ -52,7 +52,7 @@ int main(int argc, char** argv) {
     app.add_option("--fluid", fluidSizes, "Fluid sizes (particles, 5 iterations)");
     app.add_option(
         "--tunnel", tunnelSizes,
-        "Wind-tunnel sizes (molecules): dsmc-cylinder with collisions, F_N and the cell grid scaled");
+        "Wind-tunnel sizes (molecules): tunnel-cylinder with collisions, F_N and the cell grid scaled");
     app.add_option(
            "--scenes", scenes,
            "Scenes to time, of gas, fluid, tunnel (default all). Only the tunnel points: --scenes tunnel; "
@@ -115,7 +115,7 @@ int main(int argc, char** argv) {
     std::vector<pl::gl::BenchPoint> points;
     // Where the time goes: GPU timestamps around each pass (a sync every step, so the passes add up to
     // more than a pipelined step).
-    auto profilePasses = [&](pl::gl::MdModelGL& model, std::size_t n) {
+    auto profilePasses = [&](pl::gl::GasModelGL& model, std::size_t n) {
         model.setProfiling(true);
         constexpr int kProfiledSteps = 50;
         for (int s = 0; s < kProfiledSteps; ++s) model.step();
@@ -143,7 +143,7 @@ int main(int argc, char** argv) {
                     auto choice =
                         pl::gl::createModel(scene, pl::gl::backendFromName(backend), &preset, context);
                     if (!choice.message.empty()) std::cerr << choice.message << '\n';
-                    auto* gas = dynamic_cast<pl::gl::MdModelGL*>(choice.model.get());
+                    auto* gas = dynamic_cast<pl::gl::GasModelGL*>(choice.model.get());
                     if (gas) gas->setForceLanesPerDisk(lanes);
                     const auto p = pl::gl::timeModel(*choice.model, scene, backend, settings);
                     const bool gpu = backend == "gl";
@@ -173,7 +173,7 @@ int main(int argc, char** argv) {
     // Where the time goes at the largest size, on a fresh model.
     if (selected("gas") && !gasSizes.empty() && !profileEach) {
         const pl::Preset preset = pl::gl::scaledGasPreset(gasSizes.back());
-        pl::gl::MdModelGL model(context);
+        pl::gl::GasModelGL model(context);
         model.reset(preset);
         for (int s = 0; s < 5; ++s) model.step();
         profilePasses(model, gasSizes.back());

@@ -6,10 +6,10 @@
 #include "catalog/ModelCatalog.h"
 #include "common/AtomicFile.h"
 #include "common/TimeSeries.h"
+#include "gas/GasModel.h"
+#include "gas/MethodSweep.h"
+#include "gas/TimeReversal.h"
 #include "gl/Backends.h"
-#include "md/MdModel.h"
-#include "md/MethodSweep.h"
-#include "md/TimeReversal.h"
 
 #include <algorithm>
 #include <chrono>
@@ -49,6 +49,8 @@ std::unique_ptr<Model> prepare(const std::string& name, const std::vector<std::s
                                         "--seed (change parameters in a preset instead)");
         snapshot = readSnapshotFile(name, specsForModel);
     } else {
+        if (const std::string notice = presetRenameNotice(name); !notice.empty())
+            std::cerr << "particlelab-cli: " << notice << '\n';
         snapshot.preset = loadPreset(name);
         applySets(snapshot.preset, sets);
         if (seed) snapshot.preset.seed = *seed;
@@ -277,24 +279,24 @@ int writeOrPrint(const std::string& path, const std::string& text) {
 }
 
 // The sweep from a preset's gas: dt = horizon / steps, the reference Forest–Ruth at 1/8 of the finest.
-md::SweepResult sweepFromPreset(const SweepOptions& options) {
+gas::SweepResult sweepFromPreset(const SweepOptions& options) {
     Preset preset = loadPreset(options.from);
     applySets(preset, options.sets);
     if (preset.model != "gas")
         throw std::invalid_argument("sweep --from needs a gas preset, not " + preset.model);
-    MdModel gas;
+    GasModel gas;
     gas.reset(preset);
     const double horizon = options.horizon > 0 ? options.horizon : 64 * std::abs(gas.parameters().dt);
     const int finest = *std::max_element(options.steps.begin(), options.steps.end());
-    const md::GasReference reference = md::gasReference(gas, horizon, horizon / (8.0 * finest));
-    return md::sweepFromReference(reference, options.integrators, options.steps);
+    const gas::GasReference reference = gas::gasReference(gas, horizon, horizon / (8.0 * finest));
+    return gas::sweepFromReference(reference, options.integrators, options.steps);
 }
 
 int integratorSweep(const SweepOptions& options) {
-    md::SweepResult result;
+    gas::SweepResult result;
     try {
         result = options.from.empty()
-                     ? md::sweepHarmonicPair(options.integrators, options.steps, options.stiffness)
+                     ? gas::sweepHarmonicPair(options.integrators, options.steps, options.stiffness)
                      : sweepFromPreset(options);
     } catch (const std::exception& e) {
         std::cerr << "particlelab-cli: " << e.what() << "\n";
@@ -312,12 +314,12 @@ int integratorSweep(const SweepOptions& options) {
 }
 
 int loschmidtEcho(const EchoOptions& options) {
-    md::EchoSetup setup;
+    gas::EchoSetup setup;
     setup.disks = options.disks;
     std::ostringstream csv;
     csv.precision(17);
     csv << "steps,rms_double,rms_float,rms_integer\n";
-    for (const auto& p : md::loschmidtEcho(setup, options.steps))
+    for (const auto& p : gas::loschmidtEcho(setup, options.steps))
         csv << p.steps << ',' << p.rmsDouble << ',' << p.rmsFloat << ',' << p.rmsInteger << '\n';
     return writeOrPrint(options.out, csv.str());
 }

@@ -3,7 +3,7 @@
 
 #include "common/Model.h"
 #include "common/Preset.h"
-#include "md/MdIntegratorTable.h"
+#include "gas/GasIntegratorTable.h"
 
 #include <cstdint>
 #include <optional>
@@ -51,7 +51,7 @@ struct EchoOptions {
 };
 
 struct SweepOptions {
-    std::vector<std::string> integrators = mdIntegratorNamesByOrder();
+    std::vector<std::string> integrators = gasIntegratorNamesByOrder();
     std::vector<int> steps{16, 32, 64, 128, 256}; // steps over the horizon
     double stiffness = 1000.0;
     std::string from;              // a gas preset: sweep from its state against a Forest–Ruth reference

@@ -4,11 +4,11 @@
 #include "Commands.h"
 #include "catalog/ModelCatalog.h"
 #include "common/sweep/SweepGrid.h"
+#include "comparison/GasVsDsmc.h"
 #include "dsmc/DsmcSweep.h"
-#include "md/MdModel.h"
-#include "md/StabilityMap.h"
-#include "methods/MdVsDsmc.h"
-#include "pbf/FluidSweep.h"
+#include "fluid/FluidSweep.h"
+#include "gas/GasModel.h"
+#include "gas/StabilityMap.h"
 
 #include <cmath>
 #include <iostream>
@@ -32,7 +32,7 @@ std::string csvField(const std::string& text) {
 int stabilityMap(const StabilityOptions& options) {
     const std::vector<double> columns =
         options.omegaDt.empty() ? methods::logSpaced(0.05, 5.0, 25) : options.omegaDt;
-    md::StabilitySetup setup;
+    gas::StabilitySetup setup;
     setup.steps = options.steps;
     setup.tolerance = options.tolerance;
     std::ostringstream csv;
@@ -40,40 +40,40 @@ int stabilityMap(const StabilityOptions& options) {
     csv << "integrator,dt,stiffness,omega_dt,outcome,energy_error,steps,seconds,detail\n";
     for (const auto& name : options.integrators) {
         try {
-            mdIntegrator(name);
+            gasIntegrator(name);
         } catch (const std::exception& e) {
             std::cerr << "particlelab-cli: " << e.what() << "\n";
             return kBadInput;
         }
         for (double k : options.stiffness) {
-            std::vector<md::StabilityCell> row;
-            const double omega = md::cagedOmega(k);
+            std::vector<gas::StabilityCell> row;
+            const double omega = gas::cagedOmega(k);
             for (double wdt : columns) {
-                row.push_back(md::runStabilityCell(name, wdt / omega, k, setup));
-                const md::StabilityCell& c = row.back();
+                row.push_back(gas::runStabilityCell(name, wdt / omega, k, setup));
+                const gas::StabilityCell& c = row.back();
                 csv << name << ',' << c.dt << ',' << c.stiffness << ',' << c.omegaDt << ','
                     << methods::outcomeName(c.status.outcome) << ',' << c.energyError << ',' << c.status.steps
                     << ',' << c.status.seconds << ',' << csvField(c.status.detail) << '\n';
             }
-            std::cerr << name << ", k = " << k << ": stable up to ω dt = " << md::measuredLimit(row)
-                      << " (linear theory " << mdIntegrator(name).stabilityLimit << ")\n";
+            std::cerr << name << ", k = " << k << ": stable up to ω dt = " << gas::measuredLimit(row)
+                      << " (linear theory " << gasIntegrator(name).stabilityLimit << ")\n";
         }
     }
     return writeOrPrint(options.out, csv.str());
 }
 
 int fluidSweep(const FluidSweepOptions& options) {
-    pbf::FluidSweepSetup setup;
+    fluid::FluidSweepSetup setup;
     setup.duration = options.duration;
     setup.tolerance = options.tolerance;
     std::ostringstream csv;
     csv.precision(10);
     csv << "dt,iterations,outcome,density_error_mean,density_error_max,max_speed,seconds_per_time,steps,"
            "detail\n";
-    const Preset base = pbf::smallDamBreak();
+    const Preset base = fluid::smallDamBreak();
     for (double dt : options.dt)
         for (int iterations : options.iterations) {
-            const pbf::FluidCell c = pbf::runFluidCell(base, dt, iterations, setup);
+            const fluid::FluidCell c = fluid::runFluidCell(base, dt, iterations, setup);
             csv << c.dt << ',' << c.iterations << ',' << methods::outcomeName(c.status.outcome) << ','
                 << c.densityErrorMean << ',' << c.densityErrorMax << ',' << c.maxSpeed << ','
                 << c.secondsPerTime << ',' << c.status.steps << ',' << csvField(c.status.detail) << '\n';
@@ -106,7 +106,7 @@ int relaxMdDsmc(const RelaxOptions& options) {
     setup.particles = options.particles;
     setup.collisionsPerParticle = options.collisions;
     setup.seed = options.seed;
-    methods::MdVsDsmcResult r;
+    methods::GasVsDsmcResult r;
     try {
         r = methods::compareRelaxations(methods::relaxWithMd(setup), methods::relaxWithDsmc(setup));
     } catch (const std::exception& e) {

@@ -2,7 +2,7 @@
 // writes CSV (standard output without --out) and a summary on stderr, and returns the exit code.
 #pragma once
 
-#include "md/MdIntegratorTable.h"
+#include "gas/GasIntegratorTable.h"
 
 #include <string>
 #include <vector>
@@ -10,7 +10,7 @@
 namespace pl::cli {
 
 struct StabilityOptions {
-    std::vector<std::string> integrators = mdIntegratorNamesByOrder();
+    std::vector<std::string> integrators = gasIntegratorNamesByOrder();
     std::vector<double> omegaDt;                  // ω dt of the columns (default 0.05 … 5, log-spaced)
     std::vector<double> stiffness{1e2, 1e3, 1e4}; // k of the rows [M/T²]
     long long steps = 4000;

@@ -100,7 +100,7 @@ std::string sampledOutputsRefusal(const Model& model, bool fieldsAsked, bool sur
     const bool forcesMissing = surfaceAsked && !hasForceColumns(model.seriesColumns());
     if (!fieldsMissing && !forcesMissing) return {};
     return option + " need" + (fieldsAsked && surfaceAsked ? "" : "s") +
-           " a scene that samples fields and body forces (the wind tunnel, e.g. the dsmc-cylinder "
+           " a scene that samples fields and body forces (the wind tunnel, e.g. the tunnel-cylinder "
            "preset); a " +
            model.kind() + " scene has " + (fieldsMissing ? "no sampled fields" : "no drag and lift columns");
 }

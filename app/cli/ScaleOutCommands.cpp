@@ -72,7 +72,7 @@ template <class M> std::unique_ptr<M> modelFor(const ScaleOutOptions& options, c
 int exportDeck(const ScaleOutOptions& options, const std::string& dir, bool quiet, long long& steps) {
     scaleout::Deck deck;
     try {
-        const auto gas = modelFor<MdModel>(options, "gas");
+        const auto gas = modelFor<GasModel>(options, "gas");
         scaleout::LammpsExportOptions deckOptions = scaleout::defaultLammpsOptions(*gas);
         if (options.steps) deckOptions.steps = *options.steps;
         if (options.every) deckOptions.every = *options.every;

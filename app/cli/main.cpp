@@ -50,9 +50,12 @@ int main(int argc, char** argv) {
         ->check(fileName());
     runCmd->add_option("--histogram", run.histogram, "Final histograms CSV (speed; v_x for DSMC)")
         ->check(fileName());
-    runCmd->add_option("--dump-initial", run.dumpInitial, "Initial particles CSV (id,species,x,y,vx,vy)")
+    runCmd
+        ->add_option("--dump-initial", run.dumpInitial,
+                     "Initial particles CSV, one row per particle; the header names each scene's columns "
+                     "(gas: id,species,x,y,vx,vy)")
         ->check(fileName());
-    runCmd->add_option("--dump-final", run.dumpFinal, "Final particles CSV (id,species,x,y,vx,vy)")
+    runCmd->add_option("--dump-final", run.dumpFinal, "Final particles CSV, as --dump-initial")
         ->check(fileName());
     runCmd
         ->add_option("--fields", run.fields,
@@ -101,8 +104,8 @@ int main(int argc, char** argv) {
         "sweep", "Accuracy against cost of the gas's integrators on a harmonic pair (CSV; orders on stderr)");
     sweepCmd
         ->add_option("--integrators", sweep.integrators,
-                     "Schemes to compare (default: all):\n" + pl::mdIntegratorHelp())
-        ->check(CLI::IsMember(pl::mdIntegratorNames()));
+                     "Schemes to compare (default: all):\n" + pl::gasIntegratorHelp())
+        ->check(CLI::IsMember(pl::gasIntegratorNames()));
     sweepCmd->add_option("--steps", sweep.steps, "Steps over the horizon, one run each (default 16 … 256)")
         ->transform(wholeNumber(1, 1'000'000));
     sweepCmd->add_option("--stiffness", sweep.stiffness, "k of the contact [M/T²]")->check(positiveReal());
@@ -121,8 +124,8 @@ int main(int argc, char** argv) {
         "unstable (CSV; measured limits on stderr)");
     stabilityCmd
         ->add_option("--integrators", stability.integrators,
-                     "Schemes (default: all):\n" + pl::mdIntegratorHelp())
-        ->check(CLI::IsMember(pl::mdIntegratorNames()));
+                     "Schemes (default: all):\n" + pl::gasIntegratorHelp())
+        ->check(CLI::IsMember(pl::gasIntegratorNames()));
     stabilityCmd->add_option("--omega-dt", stability.omegaDt, "ω dt of the columns (default 0.05 … 5)")
         ->check(positiveReal());
     stabilityCmd->add_option("--stiffness", stability.stiffness, "k of the rows (default 100 1000 10000)")

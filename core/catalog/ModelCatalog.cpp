@@ -3,15 +3,16 @@
 
 #include "common/AtomicFile.h"
 #include "common/EmbeddedFiles.h"
+#include "common/PresetMigration.h"
 
 #include <filesystem>
 
 namespace pl {
 
 // The registrations, each defined in its kind's folder: a new kind adds one line to each list.
-const ModelDescriptor& gasRegistration();    // md/MdRegistration.cpp
+const ModelDescriptor& gasRegistration();    // gas/GasRegistration.cpp
 const ModelDescriptor& dsmcRegistration();   // dsmc/DsmcRegistration.cpp
-const ModelDescriptor& fluidRegistration();  // pbf/PbfRegistration.cpp
+const ModelDescriptor& fluidRegistration();  // fluid/FluidRegistration.cpp
 const ModelDescriptor& tunnelRegistration(); // tunnel/TunnelRegistration.cpp
 
 const std::vector<std::reference_wrapper<const ModelDescriptor>>& modelCatalog() {
@@ -83,9 +84,28 @@ std::vector<const BuiltinPreset*> builtinPresetsOf(const std::string& kind) {
     return list;
 }
 
-Preset loadPreset(const std::string& nameOrPath) {
+namespace {
+// The built-in preset a name means: its own, or the one an old name now has (a file of that name wins).
+const BuiltinPreset* builtinNamed(const std::string& nameOrPath) {
     for (const auto& p : builtinPresets())
-        if (p.name == nameOrPath) return p.preset;
+        if (p.name == nameOrPath) return &p;
+    const RenamedPreset* renamed = renamedPreset(nameOrPath);
+    if (!renamed || std::filesystem::exists(nameOrPath)) return nullptr;
+    for (const auto& p : builtinPresets())
+        if (p.name == renamed->now) return &p;
+    return nullptr;
+}
+} // namespace
+
+std::string presetRenameNotice(const std::string& nameOrPath) {
+    const RenamedPreset* renamed = renamedPreset(nameOrPath);
+    if (!renamed || builtinNamed(nameOrPath) == nullptr || builtinNamed(nameOrPath)->name == nameOrPath)
+        return {};
+    return "the preset '" + nameOrPath + "' is now called '" + renamed->now + "'";
+}
+
+Preset loadPreset(const std::string& nameOrPath) {
+    if (const BuiltinPreset* builtin = builtinNamed(nameOrPath)) return builtin->preset;
     if (!std::filesystem::exists(nameOrPath)) {
         std::string names;
         for (const auto& p : builtinPresets()) names += (names.empty() ? "" : ", ") + p.name;
@@ -108,8 +128,7 @@ std::unique_ptr<Model> instantiate(const Snapshot& snapshot) {
 }
 
 bool isSnapshotFile(const std::string& path) {
-    for (const auto& p : builtinPresets())
-        if (p.name == path) return false;
+    if (builtinNamed(path)) return false;
     if (!std::filesystem::is_regular_file(path)) return false;
     try {
         return isSnapshotJson(readWholeFile(path));

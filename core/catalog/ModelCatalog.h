@@ -39,8 +39,12 @@ const std::vector<BuiltinPreset>& builtinPresets();
 // The built-in presets of one kind, in file order.
 std::vector<const BuiltinPreset*> builtinPresetsOf(const std::string& kind);
 
-// A built-in preset by name, or a preset file by path. Throws PresetError.
+// A built-in preset by name (or by a name it had before: renamedPreset()), or a preset file by path.
+// Throws PresetError.
 Preset loadPreset(const std::string& nameOrPath);
+// One sentence for a built-in preset asked for by its old name ("the preset 'dsmc-cylinder' is now called
+// 'tunnel-cylinder'"); empty otherwise.
+std::string presetRenameNotice(const std::string& nameOrPath);
 
 // Validates a preset against its model's cross-field rules by resetting a scratch model. Throws PresetError.
 std::unique_ptr<Model> instantiate(const Preset& preset);

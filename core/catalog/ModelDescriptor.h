@@ -1,6 +1,7 @@
 // Everything the application knows about one model kind, written once in the kind's registration file
-// (md/MdRegistration.cpp, dsmc/DsmcRegistration.cpp, pbf/PbfRegistration.cpp) and read by the catalog,
-// the backend factory, the CLI and the UI. Qt-free: plots are described as data the UI draws.
+// (gas/GasRegistration.cpp, dsmc/DsmcRegistration.cpp, fluid/FluidRegistration.cpp,
+// tunnel/TunnelRegistration.cpp) and read by the catalog, the backend factory, the CLI and the UI.
+// Qt-free: plots are described as data the UI draws.
 #pragma once
 
 #include "common/Model.h"

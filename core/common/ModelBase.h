@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace pl {
@@ -97,8 +98,20 @@ public:
         return p;
     }
 
-    std::int64_t stepCount() const override { return step_; }
-    double time() const override { return time_; }
+    // One step of dt in the direction of time, the same for every model, CPU and GPU: refused once the
+    // model failed; the model's advance(h); the clock, unless advance() refused the step (it failed
+    // before changing the state); then what follows a step (afterStep(): health checks, limits).
+    void step() final {
+        if (failure_) return;
+        const double h = signedStep();
+        advance(h);
+        if (failure_) return;
+        ++step_;
+        time_ += h;
+        afterStep();
+    }
+    std::int64_t stepCount() const final { return step_; }
+    double time() const final { return time_; }
     std::optional<ModelFailure> failure() const override { return failure_; }
     void setTimeDirection(int direction) override {
         model_base::requireTimeDirection(direction, reversible());
@@ -124,12 +137,19 @@ protected:
     virtual void pullState() const {}
     virtual void stateEdited() {}
 
+    // The physics of one step of h [T] (signedStep()): the clock still reads the step's start. A model
+    // that cannot take the step calls fail() and leaves the state as it was.
+    virtual void advance(double h) = 0;
+    // After the clock moved on: the checks of the state the step left (the clock reads its end).
+    virtual void afterStep() {}
+
     // The step this model takes [T]: dt with the direction of time (exact: a sign flip).
     double signedStep() const { return timeDirection_ * params_.dt; }
-    void advanceClock(double h) {
-        ++step_;
-        time_ += h;
+    // Records the failure at the present step and time; step() refuses from then on, until a reset.
+    void fail(std::string what, std::string hint) {
+        failure_ = ModelFailure{std::move(what), step_, time_, std::move(hint)};
     }
+    bool failed() const { return failure_.has_value(); }
     void restartClock() {
         step_ = 0;
         time_ = 0.0;
@@ -149,11 +169,11 @@ protected:
     Params params_;
     std::uint64_t seed_ = 1;
     std::vector<Obstacle> obstacles_;
+
+private:
     std::int64_t step_ = 0;
     double time_ = 0.0;
     std::optional<ModelFailure> failure_;
-
-private:
     int timeDirection_ = 1;
 };
 

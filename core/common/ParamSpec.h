@@ -120,7 +120,7 @@ template <class P> ParamField<P> bindText(std::string P::*member, ParamSpec spec
 // compares enums while preset files, the command line and the panel keep the names.
 template <class E> using ChoiceTable = std::vector<std::pair<E, std::string>>;
 
-// The name of a choice value, e.g. nameOf(MdForceMethod::AllPairs) == "all-pairs".
+// The name of a choice value, e.g. nameOf(GasForceMethod::AllPairs) == "all-pairs".
 template <class E> const std::string& nameOf(E value) {
     for (const auto& [v, name] : choiceTable(E{}))
         if (v == value) return name;

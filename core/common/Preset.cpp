@@ -208,6 +208,8 @@ Preset parsePreset(std::string_view text, const SpecLookup& specsFor, const std:
         if (!root.at(key).is_string()) fail(source, key, std::string("'") + key + "' must be a string");
         (std::string(key) == "name" ? preset.name : preset.description) = root.at(key).get<std::string>();
     }
+    if (const RenamedPreset* r = renamedPreset(preset.name); r && preset.model == r->kind)
+        preset.name = r->now;
     if (root.contains("seed")) {
         const Json& seed = root.at("seed");
         if (!seed.is_number_unsigned() && !(seed.is_number_integer() && seed.get<long long>() >= 0))

@@ -94,4 +94,17 @@ Json migrateParams(const std::string& model, int schema, const Json& params, con
     return migrated;
 }
 
+const RenamedPreset* renamedPreset(const std::string& name) {
+    // The wind tunnel's presets were named after the method (dsmc-*) before they took the kind's name.
+    static constexpr RenamedPreset renamed[] = {
+        {"tunnel", "dsmc-cylinder", "tunnel-cylinder"},
+        {"tunnel", "dsmc-free-molecular-cylinder", "tunnel-free-molecular-cylinder"},
+        {"tunnel", "dsmc-shock-tube", "tunnel-shock-tube"},
+        {"tunnel", "dsmc-couette", "tunnel-couette"},
+    };
+    for (const RenamedPreset& r : renamed)
+        if (name == r.before) return &r;
+    return nullptr;
+}
+
 } // namespace pl

@@ -15,4 +15,16 @@ namespace pl {
 nlohmann::json migrateParams(const std::string& model, int schema, const nlohmann::json& params,
                              const std::string& source, std::map<std::string, std::string>& spelledAs);
 
+// The built-in preset's new name, for a name it had before (the wind tunnel's "dsmc-cylinder" is
+// "tunnel-cylinder" since the presets carry their kind's name); nullptr for a name never
+// renamed.
+// Preset files and snapshots that name the old preset read as the new one; the CLI and the app accept
+// the old name with a notice (PresetLookup).
+struct RenamedPreset {
+    const char* kind;
+    const char* before;
+    const char* now;
+};
+const RenamedPreset* renamedPreset(const std::string& name);
+
 } // namespace pl

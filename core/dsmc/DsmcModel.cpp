@@ -109,8 +109,7 @@ void DsmcModel::estimateSigmaCrMax() {
         sigmaCrMax_ = collisions_.meanSigmaCr(std::max(params_.temperature, 1.0), params_.mass());
 }
 
-void DsmcModel::step() {
-    if (failure_) return;
+void DsmcModel::advance(double /*h*/) { // h = dt: collisions run forwards only
     const auto n = static_cast<std::uint32_t>(state_.size());
     const double dt = params_.dt;
     // NTC candidates (docs/dsmc.md#ntc-candidate-pairs, Bird 1994 eq. 11.3): ½ N (N − 1) F_N (σ c_r)_max Δt /
@@ -120,16 +119,14 @@ void DsmcModel::step() {
     // (σ c_r)_max only grows during a run, and with it the candidates: a run accepted at its start can
     // outgrow what a step can do.
     if (const std::string why = nuDtRefusal(params_); !std::isfinite(wanted) || !why.empty()) {
-        failure_ =
-            ModelFailure{"the candidate count " + formatNumber(wanted, 3) + " is not finite or too large",
-                         step_, time_, withKeys(why)};
+        fail("the candidate count " + formatNumber(wanted, 3) + " is not finite or too large", withKeys(why));
         return;
     }
     candidates_ = static_cast<long long>(wanted);
     remainder_ = wanted - static_cast<double>(candidates_);
     collisionsThisStep_ = 0;
     const double m = params_.mass();
-    const auto stream = static_cast<std::uint32_t>(step_);
+    const auto stream = static_cast<std::uint32_t>(stepCount());
     for (long long c = 0; c < candidates_; ++c) {
         const Philox4x32 w =
             randomWords(seed_, RngPurpose::Collision, stream, 2 * static_cast<std::uint64_t>(c));
@@ -154,8 +151,6 @@ void DsmcModel::step() {
         ++collisionsThisStep_;
     }
     collisionsTotal_ += collisionsThisStep_;
-    ++step_;
-    time_ += dt;
 }
 
 void DsmcModel::writeParticles(std::ostream& out) const {

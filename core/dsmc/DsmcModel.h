@@ -33,7 +33,6 @@ public:
     std::string kind() const override { return "dsmc"; }
     using ModelBase::reset;
     void reset() override;
-    void step() override;
     std::size_t particleCount() const override { return state_.size(); }
     std::string accuracyWarning() const override;
     std::int64_t plannedSteps() const override { return params_.runSteps; }
@@ -54,6 +53,7 @@ public:
     long long lastCollisions() const { return collisionsThisStep_; }
 
 private:
+    void advance(double h) override; // one NTC collision step (no motion: the cell is homogeneous)
     // ModelBase's hooks: ν Δt bounds the parameters and presets (refused above kRefusedNuDt).
     void refuseParams(const DsmcParams& next) const override;
     void paramsChanged(const DsmcParams& before) override;

@@ -19,8 +19,8 @@ constexpr double kKlRangeSigmas = 5.0; // peculiar speeds up to 5 √(kT/m): all
 
 DsmcObservables DsmcModel::observe() const {
     DsmcObservables o;
-    o.step = step_;
-    o.time = time_;
+    o.step = stepCount();
+    o.time = time();
     o.particles = state_.size();
     const std::size_t n = state_.size();
     if (n == 0) return o;
@@ -63,7 +63,7 @@ DsmcObservables DsmcModel::observe() const {
     if (!planar && params_.initial == DsmcInitialState::Bkw &&
         collisions_.kind == CollisionModel::Kind::Maxwell) {
         // Time in mean collision times: ν = n σ c_r, the same at every temperature for Maxwell molecules.
-        const double K = dsmc::bkwK(numberDensity() * collisions_.prefactor * time_);
+        const double K = dsmc::bkwK(numberDensity() * collisions_.prefactor * time());
         o.m4Bkw = dsmc::bkwMomentRatio(2, K);
         o.m6Bkw = dsmc::bkwMomentRatio(3, K);
         o.m8Bkw = dsmc::bkwMomentRatio(4, K);

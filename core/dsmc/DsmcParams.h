@@ -2,6 +2,7 @@
 #pragma once
 
 #include "common/ParamSpec.h"
+#include "common/PhysicalConstants.h"
 
 #include <string>
 #include <vector>
@@ -57,9 +58,5 @@ struct DsmcParams {
     static const std::vector<ParamField<DsmcParams>>& fields();
     static const std::vector<ParamSpec>& describe();
 };
-
-// Physical constants (CODATA 2018, exact in the SI).
-inline constexpr double kBoltzmann = 1.380649e-23;       // [J/K]
-inline constexpr double kAtomicMass = 1.66053906660e-27; // [kg]
 
 } // namespace pl

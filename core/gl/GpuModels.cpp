@@ -1,8 +1,8 @@
 // The GPU model table: a kind with a GPU model adds one line here.
 #include "GpuModels.h"
 
-#include "MdModelGL.h"
-#include "PbfModelGL.h"
+#include "FluidModelGL.h"
+#include "GasModelGL.h"
 #include "TunnelModelGL.h"
 
 namespace pl::gl {
@@ -17,8 +17,8 @@ std::unique_ptr<Model> buildOnGpu(std::shared_ptr<GlContext> context, const Pres
 
 const std::vector<GpuModel>& gpuModels() {
     static const std::vector<GpuModel> list{
-        {"gas", &buildOnGpu<MdModelGL>},
-        {"fluid", &buildOnGpu<PbfModelGL>},
+        {"gas", &buildOnGpu<GasModelGL>},
+        {"fluid", &buildOnGpu<FluidModelGL>},
         {"tunnel", &buildOnGpu<TunnelModelGL>},
     };
     return list;

@@ -1,9 +1,9 @@
 // Timing helpers shared by particlelab-bench and the desktop's benchmark dialog.
 #include "MachineBenchmark.h"
 
+#include "FluidModelGL.h"
+#include "GasModelGL.h"
 #include "GlProgram.h"
-#include "MdModelGL.h"
-#include "PbfModelGL.h"
 #include "TunnelModelGL.h"
 #include "catalog/ModelCatalog.h"
 #include "tunnel/TunnelModel.h"
@@ -55,7 +55,7 @@ Preset scaledGasPreset(std::size_t n) {
                 {"init_velocity", std::string("fixed-speed")},
                 {"init_speed", 1.0},
                 {"init_placement", std::string("random")},
-                {"integrator", mdIntegrator(MdIntegrator::VelocityVerlet).name},
+                {"integrator", gasIntegrator(GasIntegrator::VelocityVerlet).name},
                 {"dt", 1e-4},
                 {"max_particles", static_cast<double>(std::max<std::size_t>(n, 1))}};
     return p;
@@ -92,7 +92,7 @@ Preset scaledFluidPreset(std::size_t n) {
 }
 
 Preset scaledTunnelPreset(std::size_t n) {
-    Preset p = loadPreset("dsmc-cylinder");
+    Preset p = loadPreset("tunnel-cylinder");
     TunnelParams params;
     params = withValues(params, TunnelParams::fields(), p.params);
     const double preset = static_cast<double>(TunnelModel::initialFillCount(params, p.obstacles));
@@ -142,8 +142,8 @@ BenchPoint timeModel(Model& model, const std::string& scene, const std::string& 
     point.issueMicrosecondsPerStep = median(issue);
     point.particleStepsPerSecond = stepsPerSecond * static_cast<double>(point.particles);
     point.microsecondsPerStep = 1e6 / stepsPerSecond;
-    if (auto* gas = dynamic_cast<MdModelGL*>(&model)) point.dispatchesPerStep = gas->dispatchesLastStep();
-    if (auto* fluid = dynamic_cast<PbfModelGL*>(&model))
+    if (auto* gas = dynamic_cast<GasModelGL*>(&model)) point.dispatchesPerStep = gas->dispatchesLastStep();
+    if (auto* fluid = dynamic_cast<FluidModelGL*>(&model))
         point.dispatchesPerStep = fluid->dispatchesLastStep();
     if (auto* tunnel = dynamic_cast<TunnelModelGL*>(&model))
         point.dispatchesPerStep = tunnel->dispatchesLastStep();

@@ -34,7 +34,7 @@ Preset scaledGasPreset(std::size_t n);
 // 5 iterations: a column five iterations hold at its rest density at every n.
 Preset scaledFluidPreset(std::size_t n);
 
-// The `dsmc-cylinder` preset (hypersonic argon past a cylinder, collisions on) scaled to about n
+// The `tunnel-cylinder` preset (hypersonic argon past a cylinder, collisions on) scaled to about n
 // simulated molecules: F_N shrinks and the cell grid refines by √ of the ratio along each side, so the
 // flow (density, Kn, Δt) and the molecules per cell stay the preset's and only the resolution grows.
 Preset scaledTunnelPreset(std::size_t n);

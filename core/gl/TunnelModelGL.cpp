@@ -150,7 +150,6 @@ void TunnelModelGL::download() const {
     const auto velocity = g.sortedVelocity.downloadVector<float>(2 * n);
     const auto vz = g.sortedVz.downloadVector<float>(n);
     const auto starts = g.prefix.starts().downloadVector<std::uint32_t>(g.cells + 1);
-    auto* self = const_cast<TunnelModelGL*>(this);
     state_.clear();
     for (std::size_t i = 0; i < n; ++i)
         state_.append(position[2 * i], position[2 * i + 1], {velocity[2 * i], velocity[2 * i + 1], vz[i]});
@@ -158,14 +157,8 @@ void TunnelModelGL::download() const {
     for (std::size_t c = 0; c < g.cells; ++c)
         std::fill(state_.cell.begin() + starts[c], state_.cell.begin() + starts[c + 1],
                   static_cast<std::uint32_t>(c));
-    self->cellStart_.assign(starts.begin(), starts.end());
-    self->order_.resize(n);
-    std::iota(self->order_.begin(), self->order_.end(), 0u); // the GPU keeps no earlier order
-    const auto remainders = g.remainders.downloadVector<float>(g.cells);
-    const auto sigma = g.cellSigmaCrMax.downloadVector<float>(g.cells);
-    self->remainder_.assign(remainders.begin(), remainders.end());
-    self->cellSigmaCrMax_.assign(sigma.begin(), sigma.end());
-    self->sigmaCrMax_ = sigma.empty() ? 0.0 : *std::max_element(sigma.begin(), sigma.end());
+    adoptDeviceCells(starts, g.remainders.downloadVector<float>(g.cells),
+                     g.cellSigmaCrMax.downloadVector<float>(g.cells));
     g.knownCount = n;
     g.countKnown = true;
 }
@@ -181,8 +174,7 @@ void TunnelModelGL::flushSamples() const {
     context_->makeCurrent();
     const std::size_t steps = g.pendingSampled.size(), bodies = obstacles_.size();
     const auto ring = g.ring.downloadVector<std::uint32_t>(steps * g.ringStride);
-    auto* self = const_cast<TunnelModelGL*>(this);
-    TunnelSampler& sampler = self->sampler_;
+    TunnelSampler& sampler = samplerForHandOver();
     const double m = params_.mass();
     bool sumsAdded = false;
     for (std::size_t k = 0; k < steps; ++k) {
@@ -206,7 +198,7 @@ void TunnelModelGL::flushSamples() const {
         }
         sampler.endStep(bodies, params_.dt);
     }
-    self->collisionsThisStep_ = ring[(steps - 1) * g.ringStride];
+    adoptDeviceCollisions(ring[(steps - 1) * g.ringStride]);
     g.ring.fillZero(steps * g.ringStride * sizeof(std::uint32_t));
     g.pendingSampled.clear();
     g.pendingSampledSteps = 0;

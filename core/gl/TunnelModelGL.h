@@ -23,7 +23,6 @@ public:
     TunnelModelGL(std::shared_ptr<GlContext> context, const Preset& preset);
     ~TunnelModelGL() override;
 
-    void step() override;
     void finishPendingWork() const override; // glFinish in the model's context
     std::size_t particleCount() const override;
     SceneView sceneViewSharingGpu() const override;
@@ -31,6 +30,8 @@ public:
     int dispatchesLastStep() const;
 
 private:
+    void advance(double h) override;
+    void afterStep() override;
     void upload() override;
     void download() const override;
     void pullSamples() const override { flushSamples(); }

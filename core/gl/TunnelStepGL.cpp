@@ -53,7 +53,7 @@ void TunnelModelGL::setCommonUniforms(ComputeProgram& p, double h) const {
     const TunnelParams& q = params_;
     const double m = q.mass();
     p.set("seedWords", unsigned(seed_), unsigned(seed_ >> 32));
-    p.set("stepIndex", unsigned(step_));
+    p.set("stepIndex", unsigned(stepCount()));
     p.set("dt", float(h));
     p.set("domain", 0.0f, 0.0f, float(q.boxWidth), float(q.boxHeight));
     p.set("cellDims", int(q.cellsX), int(q.cellsY));
@@ -74,12 +74,10 @@ void TunnelModelGL::setCommonUniforms(ComputeProgram& p, double h) const {
     p.set("surfacePurpose", unsigned(RngPurpose::TunnelSurface));
 }
 
-void TunnelModelGL::step() {
-    if (failure_) return;
+void TunnelModelGL::advance(double h) {
     TunnelGpu& g = *gpu_;
     context_->makeCurrent();
     pushState();
-    const double h = signedStep();
     // Bodies and piston on the CPU (a handful), as TunnelModel::step. Moving bodies or a piston the
     // user drives restart the window: the steps before it are handed over first.
     const bool bodiesWereMoving = obstacleDrive_.moving();
@@ -92,7 +90,7 @@ void TunnelModelGL::step() {
     const std::array<unsigned, 4> entering = inflowCounts(h);
     const unsigned enteringTotal = entering[0] + entering[1] + entering[2] + entering[3];
     ensureCapacity(enteringTotal);
-    const bool sampled = step_ >= sampleFrom_;
+    const bool sampled = stepCount() >= sampleFrom_;
     bindAll();
 
     // Move: flight, sides, bodies, piston; removal and the count into cells.
@@ -138,7 +136,10 @@ void TunnelModelGL::step() {
     g.pendingSampledSteps += sampled ? 1 : 0;
     g.countBound += enteringTotal;
     g.countKnown = false;
-    advanceClock(h);
+}
+
+void TunnelModelGL::afterStep() {
+    TunnelGpu& g = *gpu_;
     steppedOnGpu();
     if (g.pendingSampled.size() == kRingSlots) flushSamples();
     // TunnelModel::step's limit, checked when the bound on the count passes it.
@@ -147,12 +148,7 @@ void TunnelModelGL::step() {
         g.countBound = particleCount();
         if (static_cast<double>(g.countBound) > TunnelParams::maxParticles()) {
             pullState();
-            failure_ =
-                ModelFailure{std::to_string(g.countBound) + " molecules exceed the limit of " +
-                                 formatNumber(TunnelParams::maxParticles(), 3),
-                             step_, time_,
-                             withKeys("the inflow and the bodies packed more gas into the tunnel than it "
-                                      "can hold: raise {fn}")};
+            failTooManyMolecules(g.countBound);
         }
     }
 }

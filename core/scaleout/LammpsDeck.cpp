@@ -1,5 +1,5 @@
 // The LAMMPS deck of a gas: every choice below keeps LAMMPS's dynamics identical to velocity Verlet in
-// MdModel, up to round-off, or is refused with the reason (docs/scale-out.md).
+// GasModel, up to round-off, or is refused with the reason (docs/scale-out.md).
 #include "LammpsDeck.h"
 
 #include "ExactNumber.h"
@@ -20,17 +20,17 @@ std::string number(double value) {
 }
 
 // Refusals first: a deck that would silently run another experiment is worse than none.
-void checkExportable(const MdModel& gas) {
-    const MdParams& p = gas.parameters();
-    const std::string& verlet = mdIntegrator(MdIntegrator::VelocityVerlet).name;
-    if (p.integrator != MdIntegrator::VelocityVerlet)
+void checkExportable(const GasModel& gas) {
+    const GasParams& p = gas.parameters();
+    const std::string& verlet = gasIntegrator(GasIntegrator::VelocityVerlet).name;
+    if (p.integrator != GasIntegrator::VelocityVerlet)
         throw ExportError(
             "integrator " + nameOf(p.integrator) +
             " has no LAMMPS counterpart: fix nve is velocity Verlet; use --set integrator=" + verlet);
     if (p.dt < 0)
         throw ExportError("dt = " + number(p.dt) +
                           " runs time backwards; LAMMPS steps forward only: export with dt > 0");
-    if (p.wallMode == MdWallMode::Thermal)
+    if (p.wallMode == GasWallMode::Thermal)
         throw ExportError("thermal walls (wall_mode=thermal) are not exported: Debian's LAMMPS has no "
                           "diffuse wall (fix wall/reflect/stochastic is in the EXTRA-FIX package it lacks), "
                           "and a thermostat would heat the bulk instead of the walls; use --set "
@@ -42,7 +42,7 @@ void checkExportable(const MdModel& gas) {
                           "obstacle, so the run would differ. Remove the obstacles to export");
 }
 
-std::vector<std::string> mappingNotes(const MdParams& p) {
+std::vector<std::string> mappingNotes(const GasParams& p) {
     std::vector<std::string> notes{
         "exact: positions, velocities, both species' masses and diameters, the harmonic contact "
         "F = k (d_ij - r) as gran/hooke without damping or tangential spring, reflecting walls as fix "
@@ -59,9 +59,9 @@ std::vector<std::string> mappingNotes(const MdParams& p) {
     return notes;
 }
 
-std::string dataFile(const MdModel& gas, int types) {
-    const MdParams& p = gas.parameters();
-    const MdState& s = gas.state();
+std::string dataFile(const GasModel& gas, int types) {
+    const GasParams& p = gas.parameters();
+    const GasState& s = gas.state();
     std::ostringstream out;
     out.precision(17);
     out << "ParticleLab gas state (atom_style sphere: id type diameter density x y z)\n\n"
@@ -87,9 +87,9 @@ std::string dataFile(const MdModel& gas, int types) {
     return out.str();
 }
 
-std::string inputScript(const MdModel& gas, int types, const std::vector<std::string>& notes,
+std::string inputScript(const GasModel& gas, int types, const std::vector<std::string>& notes,
                         const std::string& command, const LammpsExportOptions& options) {
-    const MdParams& p = gas.parameters();
+    const GasParams& p = gas.parameters();
     std::ostringstream in;
     in.precision(17);
     in << "# ParticleLab gas (" << gas.state().size() << " disks, seed " << gas.toPreset().seed
@@ -139,7 +139,7 @@ std::string inputScript(const MdModel& gas, int types, const std::vector<std::st
 
 } // namespace
 
-LammpsExportOptions defaultLammpsOptions(const MdModel& gas) {
+LammpsExportOptions defaultLammpsOptions(const GasModel& gas) {
     constexpr long long kOpenEndedSteps = 1000, kOpenEndedEvery = 100;
     const long long planned = gas.plannedSteps();
     LammpsExportOptions options;
@@ -148,27 +148,27 @@ LammpsExportOptions defaultLammpsOptions(const MdModel& gas) {
     return options;
 }
 
-std::unique_ptr<MdModel> gasToExport(const Model& model) {
+std::unique_ptr<GasModel> gasToExport(const Model& model) {
     if (model.kind() != "gas")
         throw ExportError("only the gas exports to LAMMPS, not a " + model.kind() +
                           " experiment (the DSMC cell exports to SPARTA)");
-    auto gas = std::make_unique<MdModel>();
+    auto gas = std::make_unique<GasModel>();
     gas->reset(model.toPreset());
     gas->restoreState(model.saveState()); // a GPU model hands its particles over here
     return gas;
 }
 
-Deck lammpsDeck(const MdModel& gas, const LammpsExportOptions& options) {
+Deck lammpsDeck(const GasModel& gas, const LammpsExportOptions& options) {
     if (options.steps < 0 || options.every < 1) throw ExportError("steps must be >= 0 and every >= 1");
     checkExportable(gas);
-    const MdParams& p = gas.parameters();
+    const GasParams& p = gas.parameters();
     const int types = p.b.count > 0 ? 2 : 1;
     Deck deck;
     deck.notes = mappingNotes(p);
     deck.command = std::string("mpirun -np 2 lmp -in ") + kLammpsInput;
     deck.files.push_back({kLammpsInput, inputScript(gas, types, deck.notes, deck.command, options)});
     deck.files.push_back({kLammpsData, dataFile(gas, types)});
-    deck.files.push_back({kExperimentFile, serializePreset(gas.toPreset(), MdParams::describe())});
+    deck.files.push_back({kExperimentFile, serializePreset(gas.toPreset(), GasParams::describe())});
     deck.files.push_back(
         {"README", "A ParticleLab gas as a LAMMPS deck. Run it here with\n  " + deck.command +
                        "\n(Debian: apt install lammps openmpi-bin) and read the run back with\n"

@@ -2,7 +2,7 @@
 // the experiment itself, so that the run can be read back (LammpsImport.h).
 #pragma once
 
-#include "md/MdModel.h"
+#include "gas/GasModel.h"
 
 #include <memory>
 #include <stdexcept>
@@ -43,15 +43,15 @@ inline constexpr const char* kExperimentFile = "particlelab.json";
 
 // The run a deck holds when nothing else is asked: a preset's planned run with every step written (the
 // series then match ours row for row), else 1000 steps written every 100.
-LammpsExportOptions defaultLammpsOptions(const MdModel& gas);
+LammpsExportOptions defaultLammpsOptions(const GasModel& gas);
 
 // A CPU copy of an experiment in its current state, whatever backend it computes on, to export from.
 // Throws ExportError when the scene is not the gas.
-std::unique_ptr<MdModel> gasToExport(const Model& model);
+std::unique_ptr<GasModel> gasToExport(const Model& model);
 
 // The deck for the gas in its current state. Throws ExportError for an integrator other than velocity
 // Verlet, a negative dt, thermal walls or obstacles.
-Deck lammpsDeck(const MdModel& gas, const LammpsExportOptions& options);
+Deck lammpsDeck(const GasModel& gas, const LammpsExportOptions& options);
 
 // Writes every file of the deck into dir (created if missing). Throws FileError.
 void writeDeck(const Deck& deck, const std::string& dir);

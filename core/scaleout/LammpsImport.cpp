@@ -23,12 +23,12 @@ struct FrameObservables {
 };
 
 // The gas's disks of a dump snapshot, in atom-id order.
-std::vector<MdParticle> disksOf(const DumpFrame& frame) {
+std::vector<GasParticle> disksOf(const DumpFrame& frame) {
     const std::string needed = "id type x y vx vy";
     const std::size_t id = frame.column("id", needed), type = frame.column("type", needed),
                       x = frame.column("x", needed), y = frame.column("y", needed),
                       vx = frame.column("vx", needed), vy = frame.column("vy", needed);
-    std::vector<std::pair<double, MdParticle>> atoms;
+    std::vector<std::pair<double, GasParticle>> atoms;
     atoms.reserve(frame.values.size());
     for (const auto& v : frame.values) {
         const int species = static_cast<int>(v[type]) - 1;
@@ -37,7 +37,7 @@ std::vector<MdParticle> disksOf(const DumpFrame& frame) {
         atoms.push_back({v[id], {v[x], v[y], v[vx], v[vy], species}});
     }
     std::sort(atoms.begin(), atoms.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
-    std::vector<MdParticle> disks;
+    std::vector<GasParticle> disks;
     disks.reserve(atoms.size());
     for (const auto& a : atoms) disks.push_back(a.second);
     return disks;
@@ -48,8 +48,8 @@ std::vector<MdParticle> disksOf(const DumpFrame& frame) {
 ImportedRun importLammpsRun(const std::string& dir) {
     const Preset preset = readExportedExperiment(dir, "gas");
     ImportedRun run;
-    run.final = std::make_unique<MdModel>();
-    MdModel& gas = *run.final;
+    run.final = std::make_unique<GasModel>();
+    GasModel& gas = *run.final;
     gas.reset(preset);
 
     std::map<long long, FrameObservables> frames;
@@ -59,7 +59,7 @@ ImportedRun importLammpsRun(const std::string& dir) {
         DumpFrame frame;
         while (reader.next(frame)) {
             gas.placeParticles(disksOf(frame));
-            const MdObservables o = gas.observe();
+            const GasObservables o = gas.observe();
             frames[frame.step] = {o.potential, o.ksDistance[0], o.ksDistance[1]};
             ++run.frames;
         }
@@ -70,7 +70,7 @@ ImportedRun importLammpsRun(const std::string& dir) {
         const int c = thermo.column(name);
         return c < 0 ? kNaN : row[static_cast<std::size_t>(c)];
     };
-    const MdParams& p = gas.parameters();
+    const GasParams& p = gas.parameters();
     const double area = (p.right() - p.left()) * p.boxHeight;
     const auto columns = gas.seriesColumns();
     run.series = TimeSeries(columns);

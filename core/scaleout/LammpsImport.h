@@ -4,7 +4,7 @@
 
 #include "LogAndDump.h"
 #include "common/TimeSeries.h"
-#include "md/MdModel.h"
+#include "gas/GasModel.h"
 
 #include <memory>
 #include <string>
@@ -12,9 +12,9 @@
 namespace pl::scaleout {
 
 struct ImportedRun {
-    TimeSeries series;              // the columns of `run` for the gas; NaN where LAMMPS gives nothing
-    std::unique_ptr<MdModel> final; // the gas in the last dumped state, for histograms and dumps
-    long long frames = 0;           // dump frames read
+    TimeSeries series;               // the columns of `run` for the gas; NaN where LAMMPS gives nothing
+    std::unique_ptr<GasModel> final; // the gas in the last dumped state, for histograms and dumps
+    long long frames = 0;            // dump frames read
 };
 
 // Reads dir/particlelab.json, dir/log.lammps and dir/dump.lammpstrj (LammpsDeck.h).

@@ -113,7 +113,7 @@ void TunnelModel::collide(double h) {
     const std::size_t cells = openFraction_.size();
     const double m = params_.mass();
     const double cellVolume = params_.cellWidth() * params_.cellHeight(); // × 1 m of depth
-    const std::uint64_t base = tunnel::stepBase(step_);
+    const std::uint64_t base = tunnel::stepBase(stepCount());
     const std::uint64_t seed = seed_;
     const double fn = params_.fn;
     long long accepted = 0;

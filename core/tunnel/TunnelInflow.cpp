@@ -150,7 +150,7 @@ void TunnelModel::admitInflow(double h) {
         inflowRemainder_[side] = wanted - static_cast<double>(count);
         for (long long k = 0; k < count; ++k) {
             const auto subject = static_cast<std::uint32_t>((std::uint64_t(side) << 28) | std::uint64_t(k));
-            tunnel::CounterRng rng(seed_, RngPurpose::TunnelInflow, subject, tunnel::stepBase(step_));
+            tunnel::CounterRng rng(seed_, RngPurpose::TunnelInflow, subject, tunnel::stepBase(stepCount()));
             const double normal = tunnel::inflowNormalSpeedRatio(s, rng) * mostProbable;
             const double along = rng.uniform();
             dsmc::Velocity v;

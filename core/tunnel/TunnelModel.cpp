@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <stdexcept>
 
 namespace pl {
@@ -125,7 +126,7 @@ void TunnelModel::reset() {
 }
 
 void TunnelModel::restartSampling() {
-    sampleFrom_ = step_ + params_.sampleStart;
+    sampleFrom_ = stepCount() + params_.sampleStart;
     sampler_.restart();
 }
 
@@ -182,7 +183,7 @@ double TunnelModel::advanceBodies(double h) {
 }
 
 void TunnelModel::sampleStep(double h) {
-    if (step_ >= sampleFrom_) sampler_.addState(state_);
+    if (stepCount() >= sampleFrom_) sampler_.addState(state_);
     sampler_.endStep(obstacles_.size(), h);
 }
 
@@ -191,24 +192,37 @@ void TunnelModel::sampleStep(double h) {
 // << 32 + k); the inflow TunnelInflow (side << 28 | entering index, step << 32 + k); NTC
 // TunnelCollision (cell, step << 32 + 2³¹ + 2 · candidate (+1 for the angles)); the initial gas and
 // spawned rectangles TunnelFill (cell, call << 32 + k).
-void TunnelModel::step() {
-    if (failure_) return;
-    const double h = signedStep();
+void TunnelModel::advance(double h) {
     advanceBodies(h);
     moveParticles(h);
     admitInflow(h);
     constexpr std::int64_t kReorderInterval = 16;
-    sortIntoCells(step_ % kReorderInterval == 0);
+    sortIntoCells(stepCount() % kReorderInterval == 0);
     collide(h);
     sampleStep(h);
-    advanceClock(h);
+}
+
+void TunnelModel::afterStep() {
     stateEdited();
     if (static_cast<double>(state_.size()) > TunnelParams::maxParticles())
-        failure_ = ModelFailure{std::to_string(state_.size()) + " molecules exceed the limit of " +
-                                    formatNumber(TunnelParams::maxParticles(), 3),
-                                step_, time_,
-                                withKeys("the inflow and the bodies packed more gas into the tunnel than it "
-                                         "can hold: raise {fn}")};
+        failTooManyMolecules(state_.size());
+}
+
+void TunnelModel::adoptDeviceCells(const std::vector<std::uint32_t>& cellStart,
+                                   const std::vector<float>& remainders,
+                                   const std::vector<float>& sigmaCrMax) const {
+    cellStart_ = cellStart;
+    order_.resize(state_.size());
+    std::iota(order_.begin(), order_.end(), 0u); // the device keeps no earlier order
+    remainder_.assign(remainders.begin(), remainders.end());
+    cellSigmaCrMax_.assign(sigmaCrMax.begin(), sigmaCrMax.end());
+    sigmaCrMax_ = sigmaCrMax.empty() ? 0.0 : *std::max_element(sigmaCrMax.begin(), sigmaCrMax.end());
+}
+
+void TunnelModel::failTooManyMolecules(std::size_t count) {
+    fail(std::to_string(count) + " molecules exceed the limit of " +
+             formatNumber(TunnelParams::maxParticles(), 3),
+         withKeys("the inflow and the bodies packed more gas into the tunnel than it can hold: raise {fn}"));
 }
 
 void TunnelModel::scaleKineticEnergy(double factor) {

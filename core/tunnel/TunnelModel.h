@@ -37,7 +37,6 @@ public:
     std::string kind() const override { return "tunnel"; }
     using ModelBase::reset;
     void reset() override;
-    void step() override;
     std::int64_t plannedSteps() const override { return params_.runSteps; }
     bool reversible() const override { return false; }
     std::string accuracyWarning() const override;
@@ -121,6 +120,10 @@ public:
     static std::vector<double> openFractions(const TunnelParams& p, const std::vector<Obstacle>& obstacles);
 
 protected:
+    void advance(double h) override; // move, inflow, sort, collide, sample (TunnelModel.cpp)
+    void afterStep() override;       // the molecule limit
+    // Fails the step: count molecules are more than TunnelParams::maxParticles().
+    void failTooManyMolecules(std::size_t count);
     // A GPU backend resets once itself, after its buffers exist.
     explicit TunnelModel(DeferReset) {}
     // A backend that samples elsewhere (the GPU) hands its cell sums, body impulses and collision
@@ -170,9 +173,20 @@ protected:
     void pushOutOfBodies(std::size_t i);
     std::uint32_t cellOf(double x, double y) const;
 
+    // What a GPU twin hands over while it fills the CPU copy (core/gl/TunnelModelGL: download()): the
+    // molecules are in cell order, cell c from cellStart[c]; each cell's NTC remainder and (σ c_r)_max.
+    void adoptDeviceCells(const std::vector<std::uint32_t>& cellStart, const std::vector<float>& remainders,
+                          const std::vector<float>& sigmaCrMax) const;
+    // The sampler, for the samples of the steps a GPU twin took (flushSamples(), also from const readers).
+    TunnelSampler& samplerForHandOver() const { return sampler_; }
+    // The accepted pairs of the last step a GPU twin took.
+    void adoptDeviceCollisions(long long collisions) const { collisionsThisStep_ = collisions; }
+
     std::vector<tunnel::BodyFrame> frames_; // the bodies as this step's flights see them
     std::vector<double> openFraction_;
-    std::vector<double> cellSigmaCrMax_;
+    // Mutable, like state_: a GPU twin's lazy download (a const pullState()) fills them with the state
+    // (adoptDeviceCells(), samplerForHandOver()).
+    mutable std::vector<double> cellSigmaCrMax_;
     std::vector<double> impulseChunks_;     // per chunk of particles and body: (dpx, dpy), summed in order
     std::vector<double> scratch_;           // the sort's gather buffer
     std::vector<std::uint32_t> partCounts_; // the sort's per-thread counts, then slots
@@ -180,17 +194,17 @@ protected:
     bool pistonExperiment_ = false; // the piston runs the preset's drive (piston_speed > 0 at reset)
 
     CollisionModel collisions_;
-    TunnelSampler sampler_;
+    mutable TunnelSampler sampler_;
     // Cell c holds the molecules order_[cellStart_[c] .. cellStart_[c + 1] − 1].
-    std::vector<std::uint32_t> cellStart_, order_;
-    std::vector<double> remainder_;       // NTC fractional candidates per cell
-    std::vector<double> inflowRemainder_; // fractional entering particles per side
-    double sigmaCrMax_ = 0.0;
+    mutable std::vector<std::uint32_t> cellStart_, order_;
+    mutable std::vector<double> remainder_; // NTC fractional candidates per cell
+    std::vector<double> inflowRemainder_;   // fractional entering particles per side
+    mutable double sigmaCrMax_ = 0.0;
     double pistonX_ = 0.0;
     PistonDrive pistonDrive_;
-    std::int64_t sampleFrom_ = 0; // first step of the window
-    long long collisionsThisStep_ = 0;
-    std::uint64_t streamCounter_ = 0; // Philox counter of the model's random stream
+    std::int64_t sampleFrom_ = 0;              // first step of the window
+    mutable long long collisionsThisStep_ = 0; // a GPU twin's hand-over sets it, as the sampler
+    std::uint64_t streamCounter_ = 0;          // Philox counter of the model's random stream
 };
 
 } // namespace pl

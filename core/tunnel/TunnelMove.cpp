@@ -240,7 +240,7 @@ void TunnelModel::moveParticles(double h) {
     const std::size_t bodies = frames_.size();
     const std::size_t chunks = (n + kChunk - 1) / kChunk;
     impulseChunks_.assign(chunks * 2 * bodies, 0.0);
-    const std::uint64_t base = tunnel::stepBase(step_);
+    const std::uint64_t base = tunnel::stepBase(stepCount());
     const std::uint64_t seed = seed_;
     const bool parallel = static_cast<long long>(n) >= kParallelMinParticles;
     // The fast path: a flight that ends strictly inside the domain (right of the piston's end position,

@@ -149,7 +149,7 @@ std::vector<std::string> TunnelModel::seriesColumns() const {
 }
 
 std::vector<double> TunnelModel::sampleSeries() {
-    TunnelSeriesRow row{step_, time_, observe()};
+    TunnelSeriesRow row{stepCount(), time(), observe()};
     // The force columns are the mean since the previous sample, so no step's force is lost between rows.
     const BodyForce interval = sum(sampler_.takeIntervalForces());
     row.observed.drag = interval.drag;

@@ -80,7 +80,7 @@ private slots:
         const QString fieldsPath = dir.filePath("fields.csv"), surfacePath = dir.filePath("surface.csv"),
                       seriesPath = dir.filePath("series.csv"), snapshot = dir.filePath("end.json");
         const auto r = runCli(
-            {"run", "dsmc-cylinder", "--steps", QString::number(kSteps), "--every", QString::number(kEvery),
+            {"run", "tunnel-cylinder", "--steps", QString::number(kSteps), "--every", QString::number(kEvery),
              "--set", "sample_start=" + QString::number(kSampleStart), "--backend", "cpu", "--quiet",
              "--fields", fieldsPath, "--surface", surfacePath, "--out", seriesPath, "--snapshot", snapshot});
         QVERIFY2(!r.crashed && !r.timedOut && r.exitCode == 0, qPrintable(r.err));
@@ -174,7 +174,7 @@ private slots:
         const QString fieldsPath = dir.filePath("fields.csv"), surfacePath = dir.filePath("surface.csv");
         QProcess p;
         p.start(PARTICLELAB_CLI,
-                {"run", "dsmc-cylinder", "--steps", "1000000000", "--every", "2", "--set", "sample_start=1",
+                {"run", "tunnel-cylinder", "--steps", "1000000000", "--every", "2", "--set", "sample_start=1",
                  "--backend", "cpu", "--quiet", "--fields", fieldsPath, "--surface", surfacePath});
         QVERIFY(p.waitForStarted());
         QElapsedTimer clock;

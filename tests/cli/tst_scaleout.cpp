@@ -3,7 +3,7 @@
 // import round trip. The LAMMPS cases need lmp and mpirun (.ci/install-deps.sh installs them).
 #include "catalog/ModelCatalog.h"
 #include "common/Snapshot.h"
-#include "md/MdModel.h"
+#include "gas/GasModel.h"
 
 #include <QProcess>
 #include <QStandardPaths>
@@ -129,7 +129,7 @@ private slots:
         QTemporaryDir dir;
         pl::Preset preset = pl::loadPreset("gas-classroom");
         preset.params["count_a"] = 300.0;
-        pl::MdModel gas;
+        pl::GasModel gas;
         gas.reset(preset);
         for (int s = 0; s < 50; ++s) gas.step();
         const QString snapshot = dir.filePath("moved.json");
@@ -138,7 +138,7 @@ private slots:
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
         const QStringList data = readText(dir.filePath("deck/data.lammps")).split('\n');
         const int atoms = data.indexOf("Atoms # sphere") + 2, velocities = data.indexOf("Velocities") + 2;
-        const pl::MdState& s = gas.state();
+        const pl::GasState& s = gas.state();
         QCOMPARE(data.indexOf("300 atoms"), 2);
         for (std::size_t i : {std::size_t(0), std::size_t(299)}) {
             const QStringList atom = data[atoms + int(i)].split(' '),
@@ -192,17 +192,17 @@ private slots:
         // The wind tunnel exports too (a 2D deck with its bodies); its piston and a run that ends before
         // the fields window are refused, and the tunnel is no gas.
         const QString tunnel = dir.filePath("tunnel");
-        const auto cylinder = cli({"export", "sparta", "dsmc-cylinder", "--out", tunnel, "--quiet"});
+        const auto cylinder = cli({"export", "sparta", "tunnel-cylinder", "--out", tunnel, "--quiet"});
         QVERIFY2(cylinder.exitCode == 0, qPrintable(cylinder.err));
         for (const char* name : {"in.sparta", "gas.species", "gas.vss", "bodies.surf", "particlelab.json"})
             QVERIFY2(QFile::exists(tunnel + "/" + name), name);
-        const auto piston = cli({"export", "sparta", "dsmc-shock-tube", "--out", deck});
+        const auto piston = cli({"export", "sparta", "tunnel-shock-tube", "--out", deck});
         QCOMPARE(piston.exitCode, 2);
         QVERIFY2(piston.err.contains("piston_on"), qPrintable(piston.err));
-        const auto early = cli({"export", "sparta", "dsmc-cylinder", "--steps", "500", "--out", deck});
+        const auto early = cli({"export", "sparta", "tunnel-cylinder", "--steps", "500", "--out", deck});
         QCOMPARE(early.exitCode, 2);
         QVERIFY2(early.err.contains("sample_start"), qPrintable(early.err));
-        const auto tunnelToLammps = cli({"export", "lammps", "dsmc-cylinder", "--out", deck});
+        const auto tunnelToLammps = cli({"export", "lammps", "tunnel-cylinder", "--out", deck});
         QCOMPARE(tunnelToLammps.exitCode, 2);
         QVERIFY2(tunnelToLammps.err.contains("use export sparta"), qPrintable(tunnelToLammps.err));
 

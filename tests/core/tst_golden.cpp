@@ -227,8 +227,8 @@ bool checkAgainstGolden(const std::string& file, const Written& actual, double t
 class TestGolden : public QObject {
     Q_OBJECT
 private slots:
-    // One thread: the CPU models give the same bits at any thread count (tst_md_determinism and
-    // tst_pbf_model check that), and on a machine busy with other work OpenMP's barriers make two
+    // One thread: the CPU models give the same bits at any thread count (tst_gas_determinism and
+    // tst_fluid_model check that), and on a machine busy with other work OpenMP's barriers make two
     // threads ten times slower than one.
     void initTestCase() { omp_set_num_threads(1); }
 

@@ -1,6 +1,6 @@
 // Without a usable GL 4.3 context the factory falls back to the CPU with one clear message.
+#include "gas/GasModel.h"
 #include "gl/Backends.h"
-#include "md/MdModel.h"
 
 #include <QtTest>
 

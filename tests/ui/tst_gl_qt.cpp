@@ -4,9 +4,9 @@
 #include "ExperimentDocument.h"
 #include "MainWindow.h"
 #include "SimulationController.h"
+#include "gl/FluidModelGL.h"
+#include "gl/GasModelGL.h"
 #include "gl/MachineBenchmark.h"
-#include "gl/MdModelGL.h"
-#include "gl/PbfModelGL.h"
 #include "plots/PlotExport.h"
 #include "viewport/GLViewport.h"
 #include "viewport/QtGlContext.h"
@@ -30,9 +30,9 @@ private slots:
 
     void gasStepsInTheQtContextLikeTheCpu() {
         const Preset preset = gl::scaledGasPreset(2048);
-        MdModel cpu;
+        GasModel cpu;
         cpu.reset(preset);
-        gl::MdModelGL gpu(context_);
+        gl::GasModelGL gpu(context_);
         gpu.reset(preset);
         cpu.step();
         gpu.step();
@@ -42,7 +42,7 @@ private slots:
 
     void fluidStepsInTheQtContext() {
         const Preset preset = gl::scaledFluidPreset(900);
-        gl::PbfModelGL gpu(context_);
+        gl::FluidModelGL gpu(context_);
         gpu.reset(preset);
         for (int s = 0; s < 20; ++s) gpu.step();
         QCOMPARE(gpu.particleCount(), std::size_t(900));

@@ -5,9 +5,9 @@
 #include "MainWindow.h"
 #include "SimulationController.h"
 #include "UiTestSupport.h"
-#include "md/MdModel.h"
+#include "fluid/FluidModel.h"
+#include "gas/GasModel.h"
 #include "panels/ParameterPanel.h"
-#include "pbf/PbfModel.h"
 #include "plots/DistributionPlot.h"
 #include "plots/SeriesPlot.h"
 #include "viewport/GLViewport.h"
@@ -145,7 +145,7 @@ private slots:
         // Without gravity the column does not fall: its mean vertical velocity stays ≥ 0 (it only relaxes
         // at its free surface), where with gravity it is −1.7 L/s after these 20 steps.
         for (int s = 0; s < 20; ++s) window.controller()->model()->step();
-        const auto* fluid = static_cast<const PbfModel*>(window.controller()->model());
+        const auto* fluid = static_cast<const FluidModel*>(window.controller()->model());
         double vy = 0;
         for (double v : fluid->state().vy) vy += v / static_cast<double>(fluid->particleCount());
         QVERIFY2(vy > -0.01, qPrintable(QString::number(vy)));
@@ -157,12 +157,12 @@ private slots:
         ui::MainWindow window;
         QVERIFY(window.openPreset("gas-seed"));
         auto* controller = window.controller();
-        const MdState start = static_cast<const MdModel*>(controller->model())->state();
+        const GasState start = static_cast<const GasModel*>(controller->model())->state();
         controller->setStepsPerFrame(5);
         for (int frame = 0; frame < 20; ++frame) controller->advanceFrame();
         controller->setStepsPerFrame(-5);
         for (int frame = 0; frame < 20; ++frame) controller->advanceFrame();
-        const MdState& back = static_cast<const MdModel*>(controller->model())->state();
+        const GasState& back = static_cast<const GasModel*>(controller->model())->state();
         std::map<std::uint32_t, double> startX; // large gases are kept in spatial order: match by id
         for (std::size_t i = 0; i < start.size(); ++i) startX[start.id[i]] = start.x[i];
         double worst = 0;
@@ -244,7 +244,7 @@ private slots:
         const Model* loaded = second.controller()->model();
         QCOMPARE(std::get<double>(loaded->params().at("stiffness")), 5e4);
         QVERIFY(loaded->params() == window.controller()->model()->params());
-        const auto& obstacles = static_cast<const MdModel*>(loaded)->obstacles();
+        const auto& obstacles = static_cast<const GasModel*>(loaded)->obstacles();
         QCOMPARE(obstacles.size(), std::size_t(1));
         QCOMPARE(obstacles[0].radius, 0.15);
         QCOMPARE(second.document()->title(), QString("my-gas"));
@@ -262,7 +262,7 @@ private slots:
 
         core->setTool(ui::ViewportTool::AddDisc);
         QTest::mouseClick(view, Qt::LeftButton, {}, widgetPoint(window, -0.5, 0.0));
-        auto* md = static_cast<MdModel*>(window.controller()->model());
+        auto* md = static_cast<GasModel*>(window.controller()->model());
         QCOMPARE(md->obstacles().size(), std::size_t(1));
         QVERIFY(std::abs(md->obstacles()[0].x + 0.5) < 0.01);
         QVERIFY(window.document()->isModified());
@@ -305,7 +305,7 @@ private slots:
         window.resize(1280, 800);
         window.show();
         QVERIFY(QTest::qWaitForWindowExposed(&window));
-        auto* md = static_cast<MdModel*>(window.controller()->model());
+        auto* md = static_cast<GasModel*>(window.controller()->model());
         Obstacle paddle;
         paddle.shape = Obstacle::Shape::Box;
         paddle.x = -0.8;
@@ -339,11 +339,11 @@ private slots:
         ui::MainWindow window;
         QVERIFY(window.openPreset("gas-classroom"));
         auto* controller = window.controller();
-        const double before = static_cast<MdModel*>(controller->model())->observe().kinetic;
+        const double before = static_cast<GasModel*>(controller->model())->observe().kinetic;
         controller->setHeatRate(1.0);
         for (int f = 0; f < 10; ++f) controller->advanceFrame();
         controller->setHeatRate(0.0);
-        const double after = static_cast<MdModel*>(controller->model())->observe().kinetic;
+        const double after = static_cast<GasModel*>(controller->model())->observe().kinetic;
         QVERIFY2(after > 1.2 * before, qPrintable(QString("%1 → %2").arg(before).arg(after)));
     }
 

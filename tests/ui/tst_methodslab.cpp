@@ -1,7 +1,8 @@
 // The methods lab dock: both experiments run in a worker thread, plot as they go, and cancel cleanly.
 #include "SimulationController.h"
 #include "catalog/ModelCatalog.h"
-#include "md/MdModel.h"
+#include "fluid/FluidModel.h"
+#include "gas/GasModel.h"
 #include "methods/DsmcPage.h"
 #include "methods/FluidPage.h"
 #include "methods/GasSweepPage.h"
@@ -11,7 +12,6 @@
 #include "methods/RecommendBar.h"
 #include "methods/RelaxPage.h"
 #include "methods/StabilityPage.h"
-#include "pbf/PbfModel.h"
 
 #include <QLabel>
 #include <QTabWidget>
@@ -116,7 +116,7 @@ private slots:
         QVERIFY(choice.has_value());
         QVERIFY(choice->error <= 1e-5);
         page->recommendBar()->apply();
-        const auto* gas = dynamic_cast<const pl::MdModel*>(controller.model());
+        const auto* gas = dynamic_cast<const pl::GasModel*>(controller.model());
         QCOMPARE(nameOf(gas->parameters().integrator),
                  std::get<std::string>(choice->setting.at("integrator")));
         QCOMPARE(gas->parameters().dt, std::get<double>(choice->setting.at("dt")));
@@ -175,7 +175,7 @@ private slots:
         const auto choice = page->recommendBar()->recommendation();
         QVERIFY(choice.has_value());
         page->recommendBar()->apply();
-        const auto* fluid = dynamic_cast<const pl::PbfModel*>(controller.model());
+        const auto* fluid = dynamic_cast<const pl::FluidModel*>(controller.model());
         QCOMPARE(fluid->parameters().dt, std::get<double>(choice->setting.at("dt")));
         save(lab, "methods-lab-fluid.png", 3);
     }

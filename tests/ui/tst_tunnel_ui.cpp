@@ -29,7 +29,7 @@ using namespace pl;
 
 namespace {
 
-constexpr const char* kPreset = "dsmc-cylinder";
+constexpr const char* kPreset = "tunnel-cylinder";
 // The preset opens its fields window after 800 steps, once the flow has crossed the domain twice; the
 // tests read the fields much earlier (the domain upstream still holds the free stream it started with),
 // so that each takes seconds, not minutes.

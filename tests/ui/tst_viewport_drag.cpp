@@ -3,8 +3,8 @@
 // fluid seed a drag in empty space pours; screenshots before and after the drag are saved to look at.
 #include "MainWindow.h"
 #include "SimulationController.h"
-#include "md/MdModel.h"
-#include "pbf/PbfModel.h"
+#include "fluid/FluidModel.h"
+#include "gas/GasModel.h"
 #include "viewport/ViewportCore.h"
 
 #include <QDir>
@@ -57,7 +57,7 @@ private slots:
         window.show();
         QVERIFY(QTest::qWaitForWindowExposed(&window));
         auto* controller = window.controller();
-        auto* gas = static_cast<MdModel*>(controller->model());
+        auto* gas = static_cast<GasModel*>(controller->model());
         gas->addObstacle({Obstacle::Shape::Disc, -0.6, 0.0, 0.12});
         controller->setStepsPerFrame(20);
         for (int f = 0; f < 150; ++f) controller->advanceFrame(); // toward Maxwell–Boltzmann, around the disc
@@ -109,7 +109,7 @@ private slots:
         window.show();
         QVERIFY(QTest::qWaitForWindowExposed(&window));
         QCOMPARE(window.viewportCore()->tool(), ui::ViewportTool::Drag);
-        auto* fluid = static_cast<PbfModel*>(window.controller()->model());
+        auto* fluid = static_cast<FluidModel*>(window.controller()->model());
         QCOMPARE(fluid->particleCount(), std::size_t(0));
         QWidget* view = window.viewport();
         const QPoint a = widgetPoint(window, 10, 30), b = widgetPoint(window, 20, 35);

@@ -4,7 +4,7 @@
 
 #include "catalog/ModelCatalog.h"
 #include "common/sweep/CellOutcome.h"
-#include "md/MdIntegratorTable.h"
+#include "gas/GasIntegratorTable.h"
 
 #include <algorithm>
 #include <cctype>
@@ -81,7 +81,7 @@ std::vector<std::string> coreDisplayStrings() {
           CellOutcome::Exploded, CellOutcome::Rejected})
         add(methods::outcomeName(outcome));
     // The gas's integrators, described in the methods lab's integrator choice.
-    for (const MdIntegratorInfo& scheme : mdIntegrators()) add(scheme.description);
+    for (const GasIntegratorInfo& scheme : gasIntegrators()) add(scheme.description);
     // Scene legends and histogram names are made by the models at run time: every built-in preset's
     // freshly reset model shows them.
     for (const BuiltinPreset& builtin : builtinPresets()) {

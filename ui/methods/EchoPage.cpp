@@ -3,7 +3,7 @@
 
 #include "LabPlots.h"
 #include "LabRunner.h"
-#include "md/TimeReversal.h"
+#include "gas/TimeReversal.h"
 
 #include <qcustomplot.h>
 
@@ -27,7 +27,7 @@ void EchoPage::run() {
     std::vector<LabRunner::Job> jobs;
     for (long long n : steps_)
         jobs.push_back([this, n, doubles, floats]() -> LabRunner::Show {
-            const md::EchoPoint p = md::loschmidtEcho(md::EchoSetup{}, {n}).front();
+            const gas::EchoPoint p = gas::loschmidtEcho(gas::EchoSetup{}, {n}).front();
             return [this, p, doubles, floats] {
                 // Log axes: an exact return (0) has no place on them; the status line reports it.
                 if (p.rmsDouble > 0) doubles->addData(double(p.steps), p.rmsDouble);

@@ -1,5 +1,5 @@
 // Time reversal, measured: the Loschmidt echo in double, float and bit-reversible integers
-// (md/TimeReversal).
+// (gas/TimeReversal).
 #pragma once
 
 #include "LabPage.h"

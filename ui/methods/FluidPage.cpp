@@ -5,7 +5,7 @@
 #include "LabRunner.h"
 #include "RecommendBar.h"
 #include "SimulationController.h"
-#include "pbf/PbfModel.h"
+#include "fluid/FluidModel.h"
 
 #include <QComboBox>
 #include <QHBoxLayout>
@@ -18,7 +18,7 @@ namespace {
 const std::vector<methods::CellOutcome> kClasses{
     methods::CellOutcome::Stable, methods::CellOutcome::OverCompressed, methods::CellOutcome::Exploded,
     methods::CellOutcome::Rejected};
-bool ranThrough(const pbf::FluidCell& c) {
+bool ranThrough(const fluid::FluidCell& c) {
     return c.status.outcome == methods::CellOutcome::Stable ||
            c.status.outcome == methods::CellOutcome::OverCompressed;
 }
@@ -76,20 +76,20 @@ void FluidPage::run() {
     map_->clearGraphs();
     replotCost();
     lab::addOutcomeGraphs(map_, kClasses);
-    if (const auto* fluid = dynamic_cast<const PbfModel*>(currentModel("fluid")))
+    if (const auto* fluid = dynamic_cast<const FluidModel*>(currentModel("fluid")))
         lab::markCurrent(map_, fluid->parameters().dt, static_cast<double>(fluid->parameters().iterations),
                          tr("current fluid"));
     map_->xAxis->setRange(dts_.front() / 1.6, dts_.back() * 1.6);
     map_->yAxis->setRange(0, *std::max_element(iterations_.begin(), iterations_.end()) + 1);
     map_->replot();
     std::vector<LabRunner::Job> jobs;
-    const Preset base = pbf::smallDamBreak();
+    const Preset base = fluid::smallDamBreak();
     for (double dt : dts_)
         jobs.push_back([this, dt, base]() -> LabRunner::Show {
-            std::vector<pbf::FluidCell> row;
+            std::vector<fluid::FluidCell> row;
             for (int n : iterations_) {
                 if (*runner_->stopFlag()) break;
-                row.push_back(pbf::runFluidCell(base, dt, n, setup_));
+                row.push_back(fluid::runFluidCell(base, dt, n, setup_));
             }
             return [this, row, dt] {
                 int failed = 0;
@@ -109,7 +109,7 @@ void FluidPage::run() {
     runner_->start(std::move(jobs), tr("Fluid sweep"));
 }
 
-double FluidPage::error(const pbf::FluidCell& c) const {
+double FluidPage::error(const fluid::FluidCell& c) const {
     return errorKind_->currentIndex() == 0 ? c.densityErrorMean : c.densityErrorMax;
 }
 

@@ -1,11 +1,11 @@
-// The fluid's stability and accuracy against cost (pbf/FluidSweep): a small dam break over dt ×
+// The fluid's stability and accuracy against cost (fluid/FluidSweep): a small dam break over dt ×
 // solver iterations, mapped as stable / over-compressed / exploded, and its density error against
 // the wall time it cost, one curve per dt; Recommend applies the cheapest dt and iteration count.
 #pragma once
 
 #include "LabPage.h"
 #include "common/sweep/Recommend.h"
-#include "pbf/FluidSweep.h"
+#include "fluid/FluidSweep.h"
 
 class QComboBox;
 class QCustomPlot;
@@ -22,14 +22,14 @@ public:
     QCustomPlot* mapPlot() const { return map_; }
     QCustomPlot* costPlot() const { return cost_; }
     RecommendBar* recommendBar() const { return recommend_; }
-    const std::vector<pbf::FluidCell>& cells() const { return cells_; }
+    const std::vector<fluid::FluidCell>& cells() const { return cells_; }
 
 public slots:
     void run() override;
 
 private:
     std::vector<methods::Candidate> candidates() const;
-    double error(const pbf::FluidCell& c) const;
+    double error(const fluid::FluidCell& c) const;
     void replotCost();
 
     QCustomPlot* map_ = nullptr;
@@ -38,8 +38,8 @@ private:
     RecommendBar* recommend_ = nullptr;
     std::vector<double> dts_{0.00125, 0.0025, 0.005, 0.01, 0.02, 0.04, 0.08};
     std::vector<int> iterations_{1, 2, 3, 5, 8, 12};
-    pbf::FluidSweepSetup setup_;
-    std::vector<pbf::FluidCell> cells_;
+    fluid::FluidSweepSetup setup_;
+    std::vector<fluid::FluidCell> cells_;
 };
 
 } // namespace pl::ui

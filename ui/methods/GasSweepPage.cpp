@@ -5,7 +5,7 @@
 #include "LabRunner.h"
 #include "RecommendBar.h"
 #include "SimulationController.h"
-#include "md/MdModel.h"
+#include "gas/GasModel.h"
 
 #include <QComboBox>
 #include <QLabel>
@@ -15,7 +15,7 @@
 namespace pl::ui {
 
 namespace {
-const std::vector<std::string> kSchemes = mdIntegratorNamesByOrder();
+const std::vector<std::string> kSchemes = gasIntegratorNamesByOrder();
 // From the gas: the horizon is 64 of its steps, swept at 8 … 128 steps, the reference at 1024.
 constexpr double kHorizonSteps = 64;
 const std::vector<int> kGasSteps{8, 16, 32, 64, 128};
@@ -71,26 +71,26 @@ void GasSweepPage::setSource(Source source) {
     source_->setCurrentIndex(source == Source::HarmonicPair ? 0 : 1);
 }
 
-double GasSweepPage::error(const md::SweepPoint& p) const {
+double GasSweepPage::error(const gas::SweepPoint& p) const {
     return errorAxis_->currentIndex() == 0 ? p.trajectoryError : p.energyError;
 }
 
-double GasSweepPage::cost(const md::SweepPoint& p) const {
+double GasSweepPage::cost(const gas::SweepPoint& p) const {
     return costAxis_->currentIndex() == 0 ? p.forcesPerTime : p.secondsPerTime;
 }
 
 void GasSweepPage::run() {
     if (runner_->isRunning()) return; // its queued points still draw into this page
     const Source source = source_->currentIndex() == 0 ? Source::HarmonicPair : Source::CurrentGas;
-    auto reference = std::make_shared<md::GasReference>();
+    auto reference = std::make_shared<gas::GasReference>();
     if (source == Source::CurrentGas) {
-        const auto* gas = dynamic_cast<const MdModel*>(currentModel("gas"));
+        const auto* gas = dynamic_cast<const GasModel*>(currentModel("gas"));
         if (!gas || gas->particleCount() == 0) {
             runner_->setStatus(tr("Load a gas experiment with disks first, or sweep the harmonic pair."));
             return;
         }
         // The gas runs on in this thread: the worker gets its state as it is now.
-        *reference = md::captureGas(*gas);
+        *reference = gas::captureGas(*gas);
         currentIntegrator_ = nameOf(gas->parameters().integrator);
         currentDt_ = gas->parameters().dt;
     }
@@ -103,21 +103,21 @@ void GasSweepPage::run() {
     if (source == Source::CurrentGas) {
         const double horizon = kHorizonSteps * std::abs(currentDt_);
         jobs.push_back([reference, horizon, this]() -> LabRunner::Show {
-            md::runReference(*reference, horizon, horizon / kReferenceSteps);
+            gas::runReference(*reference, horizon, horizon / kReferenceSteps);
             return [this] { runner_->setStatus(tr("Reference run done; sweeping the integrators…")); };
         });
     }
     for (const std::string& name : kSchemes)
         jobs.push_back([this, name, reference, source, steps = pairSteps_]() -> LabRunner::Show {
-            const md::SweepResult r = source == Source::HarmonicPair
-                                          ? md::sweepHarmonicPair({name}, steps)
-                                          : md::sweepFromReference(*reference, {name}, kGasSteps);
+            const gas::SweepResult r = source == Source::HarmonicPair
+                                           ? gas::sweepHarmonicPair({name}, steps)
+                                           : gas::sweepFromReference(*reference, {name}, kGasSteps);
             return [this, r] {
                 points_.insert(points_.end(), r.points.begin(), r.points.end());
                 orders_.insert(orders_.end(), r.orders.begin(), r.orders.end());
                 int failed = 0;
                 for (const auto& p : r.points) failed += !p.failure.empty();
-                const md::SweepOrder& o = r.orders.front();
+                const gas::SweepOrder& o = r.orders.front();
                 runner_->setStatus(
                     tr("%1: measured order %2 (theory %3)%4")
                         .arg(QString::fromStdString(o.integrator))
@@ -135,7 +135,7 @@ void GasSweepPage::replot() {
     plot_->xAxis->setLabel(costAxis_->currentText());
     plot_->yAxis->setLabel(errorAxis_->currentText());
     for (std::size_t k = 0; k < orders_.size(); ++k) {
-        const md::SweepOrder& o = orders_[k];
+        const gas::SweepOrder& o = orders_[k];
         QCPGraph* curve =
             lab::addCurve(plot_,
                           tr("%1 (order %2, theory %3)")

@@ -1,4 +1,4 @@
-// Accuracy against cost for the gas's integrators (md/MethodSweep): on the harmonic pair with its exact
+// Accuracy against cost for the gas's integrators (gas/MethodSweep): on the harmonic pair with its exact
 // solution, or from the current gas against a Forest–Ruth reference at 1/16 of its step. Error and cost
 // axes are chosen from the measured columns; the current setting is marked; Recommend picks the cheapest
 // scheme and dt for an error target and applies it to the gas.
@@ -6,7 +6,7 @@
 
 #include "LabPage.h"
 #include "common/sweep/Recommend.h"
-#include "md/MethodSweep.h"
+#include "gas/MethodSweep.h"
 
 class QComboBox;
 class QCustomPlot;
@@ -24,7 +24,7 @@ public:
     void setPairSteps(std::vector<int> steps) { pairSteps_ = std::move(steps); }
     QCustomPlot* plot() const { return plot_; }
     RecommendBar* recommendBar() const { return recommend_; }
-    const std::vector<md::SweepPoint>& points() const { return points_; }
+    const std::vector<gas::SweepPoint>& points() const { return points_; }
 
 public slots:
     void run() override;
@@ -32,8 +32,8 @@ public slots:
 private:
     void replot();
     std::vector<methods::Candidate> candidates() const;
-    double error(const md::SweepPoint& p) const;
-    double cost(const md::SweepPoint& p) const;
+    double error(const gas::SweepPoint& p) const;
+    double cost(const gas::SweepPoint& p) const;
 
     std::vector<int> pairSteps_{16, 32, 64, 128, 256};
     QComboBox* source_ = nullptr;
@@ -41,8 +41,8 @@ private:
     QComboBox* costAxis_ = nullptr;
     QCustomPlot* plot_ = nullptr;
     RecommendBar* recommend_ = nullptr;
-    std::vector<md::SweepPoint> points_;
-    std::vector<md::SweepOrder> orders_;
+    std::vector<gas::SweepPoint> points_;
+    std::vector<gas::SweepOrder> orders_;
     Source ranSource_ = Source::HarmonicPair;
     std::string currentIntegrator_;
     double currentDt_ = 0; // signed, of the gas the last run started from

@@ -90,7 +90,7 @@ void RelaxPage::run() {
     });
     jobs.push_back([this, runs, setup = setup_, onSample = plotAsItGoes(dsmc)]() -> LabRunner::Show {
         runs->second = methods::relaxWithDsmc(setup, onSample, runner_->stopFlag());
-        const methods::MdVsDsmcResult r = methods::compareRelaxations(runs->first, runs->second);
+        const methods::GasVsDsmcResult r = methods::compareRelaxations(runs->first, runs->second);
         return [this, r] {
             runner_->setStatus(tr("Both relaxed: %1 and %2 collisions per particle")
                                    .arg(r.md.curve.back().collisionsPerParticle, 0, 'f', 1)

@@ -1,10 +1,10 @@
-// Model no more than the scene needs (methods/MdVsDsmc): the disk gas and planar DSMC relax from the
+// Model no more than the scene needs (comparison/GasVsDsmc): the disk gas and planar DSMC relax from the
 // same two beams; the kurtosis of v_x against collisions per particle for both, the wall time each
 // took, and whether they ended at one Maxwellian.
 #pragma once
 
 #include "LabPage.h"
-#include "methods/MdVsDsmc.h"
+#include "comparison/GasVsDsmc.h"
 
 class QCustomPlot;
 class QLabel;

@@ -4,8 +4,8 @@
 #include "LabPlots.h"
 #include "LabRunner.h"
 #include "common/sweep/SweepGrid.h"
+#include "gas/GasModel.h"
 #include "i18n/Translations.h"
-#include "md/MdModel.h"
 
 #include <QComboBox>
 #include <QLabel>
@@ -32,7 +32,7 @@ StabilityPage::StabilityPage(LabRunner* runner, SimulationController* controller
       stiffness_(methods::logSpaced(std::pow(10.0, 1.5), std::pow(10.0, 5.5), 9)),
       dts_(methods::logSpaced(6e-5, 0.6, 26)) {
     integrator_ = new QComboBox(this);
-    for (const MdIntegratorInfo& scheme : mdIntegrators()) {
+    for (const GasIntegratorInfo& scheme : gasIntegrators()) {
         integrator_->addItem(QString::fromStdString(scheme.name));
         integrator_->setItemData(integrator_->count() - 1, coreText(scheme.description), Qt::ToolTipRole);
     }
@@ -57,17 +57,17 @@ void StabilityPage::setGrid(std::vector<double> stiffness, std::vector<double> d
 void StabilityPage::drawFrame(const std::string& integrator) {
     plot_->clearGraphs();
     lab::addOutcomeGraphs(plot_, kClasses);
-    const double limit = mdIntegrator(integrator).stabilityLimit;
+    const double limit = gasIntegrator(integrator).stabilityLimit;
     if (limit > 0) {
         QCPGraph* line = plot_->addGraph();
         line->setName(tr("linear limit ω dt = %1").arg(limit, 0, 'g', 4));
         line->setPen(QPen(Qt::black, 2, Qt::DashLine));
         for (double k : methods::logSpaced(stiffness_.front(), stiffness_.back(), 20))
-            line->addData(limit / md::cagedOmega(k), k);
+            line->addData(limit / gas::cagedOmega(k), k);
     }
-    if (const auto* gas = dynamic_cast<const MdModel*>(currentModel("gas"))) {
+    if (const auto* gas = dynamic_cast<const GasModel*>(currentModel("gas"))) {
         // A gas of mass m has the contact frequency of unit masses at k/m.
-        const MdParams& p = gas->parameters();
+        const GasParams& p = gas->parameters();
         lab::markCurrent(plot_, std::abs(p.dt), p.stiffness / p.a.mass, tr("current gas"));
     }
     plot_->xAxis->setRange(dts_.front() / 1.5, dts_.back() * 1.5);
@@ -80,20 +80,20 @@ void StabilityPage::run() {
     const std::string integrator = integrator_->currentText().toStdString();
     cells_.clear();
     drawFrame(integrator);
-    md::StabilitySetup setup;
+    gas::StabilitySetup setup;
     setup.steps = 2000;
     std::vector<LabRunner::Job> jobs;
     for (double k : stiffness_)
         jobs.push_back([this, k, integrator, setup, dts = dts_]() -> LabRunner::Show {
-            std::vector<md::StabilityCell> row;
+            std::vector<gas::StabilityCell> row;
             for (double dt : dts) {
                 if (*runner_->stopFlag()) break;
-                row.push_back(md::runStabilityCell(integrator, dt, k, setup));
+                row.push_back(gas::runStabilityCell(integrator, dt, k, setup));
             }
             return [this, row, k] {
                 for (const auto& c : row) lab::addCell(plot_, kClasses, c.status.outcome, c.dt, c.stiffness);
                 cells_.insert(cells_.end(), row.begin(), row.end());
-                const double limit = md::measuredLimit(row);
+                const double limit = gas::measuredLimit(row);
                 runner_->setStatus(
                     std::isnan(limit)
                         ? tr("k = %1: no cell blew up").arg(k, 0, 'g', 3)

@@ -1,9 +1,9 @@
-// The gas's stability map (md/StabilityMap): dt × stiffness for one integrator, each cell stable,
+// The gas's stability map (gas/StabilityMap): dt × stiffness for one integrator, each cell stable,
 // inaccurate or unstable, with the linear limit ω dt = L drawn over it and the current gas marked.
 #pragma once
 
 #include "LabPage.h"
-#include "md/StabilityMap.h"
+#include "gas/StabilityMap.h"
 
 class QComboBox;
 class QCustomPlot;
@@ -18,7 +18,7 @@ public:
     // The grid: stiffness rows and dt columns (log-spaced); tests use small ones.
     void setGrid(std::vector<double> stiffness, std::vector<double> dts);
     QCustomPlot* plot() const { return plot_; }
-    const std::vector<md::StabilityCell>& cells() const { return cells_; }
+    const std::vector<gas::StabilityCell>& cells() const { return cells_; }
 
 public slots:
     void run() override;
@@ -29,7 +29,7 @@ private:
     QComboBox* integrator_ = nullptr;
     QCustomPlot* plot_ = nullptr;
     std::vector<double> stiffness_, dts_;
-    std::vector<md::StabilityCell> cells_;
+    std::vector<gas::StabilityCell> cells_;
 };
 
 } // namespace pl::ui

@@ -2,7 +2,7 @@
 // and nothing is half-applied.
 #include "catalog/ModelCatalog.h"
 #include "common/AtomicFile.h"
-#include "md/MdModel.h"
+#include "gas/GasModel.h"
 
 #include <QTemporaryDir>
 #include <QtTest>
@@ -49,15 +49,15 @@ private slots:
     void seedPresetIsTheSeed() {
         const Preset p = loadPreset("gas-seed");
         auto model = instantiate(p);
-        const auto& md = static_cast<const MdModel&>(*model).parameters();
+        const auto& md = static_cast<const GasModel&>(*model).parameters();
         QCOMPARE(md.totalCount(), 4096LL);
         QCOMPARE(md.a.diameter, 0.01);
         QCOMPARE(md.stiffness, 1000.0);
         QCOMPARE(md.dt, 1e-4);
         QCOMPARE(md.left(), -1.0);
         QCOMPARE(md.right(), 1.0);
-        QVERIFY(md.integrator == MdIntegrator::VelocityVerlet);
-        const auto& s = static_cast<const MdModel&>(*model).state();
+        QVERIFY(md.integrator == GasIntegrator::VelocityVerlet);
+        const auto& s = static_cast<const GasModel&>(*model).state();
         for (std::size_t i = 0; i < s.size(); ++i)
             QVERIFY(std::abs(std::hypot(s.vx[i], s.vy[i]) - 1.0) < 1e-12);
     }
@@ -101,12 +101,12 @@ private slots:
     }
 
     void modelToPresetRoundTrip() {
-        MdModel model;
+        GasModel model;
         model.reset(loadPreset("gas-mixture"));
         model.setParams({{"gravity", 0.5}});
         const Preset p = model.toPreset();
-        MdModel copy;
-        copy.reset(parsePreset(serializePreset(p, MdParams::describe()), specsForModel));
+        GasModel copy;
+        copy.reset(parsePreset(serializePreset(p, GasParams::describe()), specsForModel));
         QVERIFY(copy.params() == model.params());
     }
 
@@ -160,7 +160,7 @@ private slots:
         const QString fit = errorOf(gasPreset(R"("count_a": 40000, "diameter_a": 0.02)"), &key);
         QVERIFY2(fit.contains("% fits"), qPrintable(fit));
         // The memory rule, with a budget small enough to test on any machine.
-        MdParams p;
+        GasParams p;
         p.a.count = 100000;
         p.boxWidth = p.boxHeight = 10; // room for them: only memory is short
         QVERIFY_THROWS_EXCEPTION(ParamError, p.validate(1e6));
@@ -195,7 +195,7 @@ private slots:
     }
 
     void nothingHalfApplied() {
-        MdModel model;
+        GasModel model;
         model.reset(loadPreset("gas-classroom"));
         for (int i = 0; i < 10; ++i) model.step();
         const auto before = model.params();

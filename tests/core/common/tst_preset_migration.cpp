@@ -3,6 +3,7 @@
 // snapshots load; what is written is schema 2; bad schema-1 entries are named as the file spells them.
 #include "catalog/ModelCatalog.h"
 #include "common/AtomicFile.h"
+#include "common/PresetMigration.h"
 #include "common/Snapshot.h"
 
 #include <QTemporaryDir>
@@ -186,6 +187,32 @@ private slots:
         QCOMPARE(key, std::string("params.world_width"));
         QVERIFY(!errorOf(R"({"schema": 2, "model": "fluid", "params": {"gravity": true}})", &key).isEmpty());
         QCOMPARE(key, std::string("params.gravity"));
+    }
+
+    // The wind tunnel's presets took the kind's name: the old names load the same preset, from the
+    // command line (with a notice) and from a file or snapshot that names them.
+    void renamedTunnelPresetsStillLoad() {
+        for (const char* old :
+             {"dsmc-cylinder", "dsmc-free-molecular-cylinder", "dsmc-shock-tube", "dsmc-couette"}) {
+            const RenamedPreset* renamed = renamedPreset(old);
+            QVERIFY2(renamed, old);
+            const Preset now = loadPreset(renamed->now);
+            const Preset before = loadPreset(old);
+            QCOMPARE(before.name, std::string(renamed->now));
+            QCOMPARE(before.model, std::string("tunnel"));
+            QVERIFY(before.params == now.params);
+            QVERIFY(!isSnapshotFile(old));
+            const std::string notice = presetRenameNotice(old);
+            QVERIFY2(notice.find(renamed->now) != std::string::npos, notice.c_str());
+            QVERIFY(presetRenameNotice(renamed->now).empty());
+        }
+        QVERIFY(renamedPreset("dsmc-seed") == nullptr); // the DSMC cell's presets keep their names
+        const Preset file =
+            parsePreset(R"({"schema": 2, "model": "tunnel", "name": "dsmc-couette"})", specsForModel, "file");
+        QCOMPARE(file.name, std::string("tunnel-couette"));
+        const Preset gas =
+            parsePreset(R"({"schema": 2, "model": "gas", "name": "dsmc-couette"})", specsForModel, "file");
+        QCOMPARE(gas.name, std::string("dsmc-couette")); // a user's own name for another kind stays
     }
 
     void unknownSchemasAreRefused() {

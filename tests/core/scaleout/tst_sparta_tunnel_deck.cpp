@@ -1,7 +1,7 @@
 // The wind tunnel as a 2D SPARTA deck against SPARTA's documented input syntax (create_box, create_grid,
 // fix emit/face, read_surf, surf_collide diffuse, bound_modify, compute grid / surf, stats_style), the
 // bodies file against the geometry of the bodies, and, where a spa_serial binary is at hand, SPARTA
-// itself running the dsmc-cylinder deck.
+// itself running the tunnel-cylinder deck.
 #include "DeckText.h"
 #include "catalog/ModelCatalog.h"
 #include "common/AtomicFile.h"
@@ -90,14 +90,14 @@ std::string spartaBinary() {
 class TestSpartaTunnelDeck : public QObject {
     Q_OBJECT
 private slots:
-    // dsmc-cylinder as SPARTA reads it: the 2D box, grid, weight, free stream, sides and body of the
+    // tunnel-cylinder as SPARTA reads it: the 2D box, grid, weight, free stream, sides and body of the
     // preset, every command with the argument count of SPARTA's documentation. The sides are set here:
     // the stream enters at the left and the top, leaves at the right, the bottom is the symmetry plane.
     void tunnelDeckMatchesTheCylinder() {
-        const auto tunnel = tunnelFor("dsmc-cylinder", {{"left", std::string("inflow")},
-                                                        {"right", std::string("outflow")},
-                                                        {"bottom", std::string("specular")},
-                                                        {"top", std::string("inflow")}});
+        const auto tunnel = tunnelFor("tunnel-cylinder", {{"left", std::string("inflow")},
+                                                          {"right", std::string("outflow")},
+                                                          {"bottom", std::string("specular")},
+                                                          {"top", std::string("inflow")}});
         const TunnelParams& p = tunnel->parameters();
         const auto deck = scaleout::spartaDeck(*tunnel, {1000, 50});
         const std::string& input = file(deck, scaleout::kSpartaInput);
@@ -177,7 +177,7 @@ private slots:
         Obstacle box;
         box.shape = Obstacle::Shape::Box;
         box.x = 0.15, box.y = 0.06, box.halfWidth = 0.004, box.halfHeight = 0.01;
-        const auto tunnel = tunnelFor("dsmc-cylinder", {}, {box});
+        const auto tunnel = tunnelFor("tunnel-cylinder", {}, {box});
         const auto deck = scaleout::spartaDeck(*tunnel, {1000, 50});
         const SurfaceFile surf = parseSurface(file(deck, scaleout::kSpartaBodies));
         const Obstacle& disc = tunnel->obstacles()[0];
@@ -215,10 +215,10 @@ private slots:
                 0.25 * std::min(tunnel->parameters().cellWidth(), tunnel->parameters().cellHeight()));
     }
 
-    // dsmc-couette: periodic along the walls, diffuse walls at 273 K moving at ∓250 m/s, the gas
+    // tunnel-couette: periodic along the walls, diffuse walls at 273 K moving at ∓250 m/s, the gas
     // created at rest, no inflow and no bodies.
     void couetteWallsAreMovingDiffuseSides() {
-        const auto tunnel = tunnelFor("dsmc-couette");
+        const auto tunnel = tunnelFor("tunnel-couette");
         const auto deck = scaleout::spartaDeck(*tunnel, {4000, 100});
         const std::string& input = file(deck, scaleout::kSpartaInput);
         auto c = commandsOf(input);
@@ -244,13 +244,13 @@ private slots:
 
     void tunnelScenesSpartaCannotRunAreRefused() {
         QVERIFY_THROWS_EXCEPTION(scaleout::ExportError,
-                                 scaleout::spartaDeck(*tunnelFor("dsmc-shock-tube"), {1800, 1}));
-        const auto cylinder = tunnelFor("dsmc-cylinder");
+                                 scaleout::spartaDeck(*tunnelFor("tunnel-shock-tube"), {1800, 1}));
+        const auto cylinder = tunnelFor("tunnel-cylinder");
         QVERIFY_THROWS_EXCEPTION(scaleout::ExportError,
                                  scaleout::spartaDeck(*cylinder, {800, 1})); // no window
         // 1000 steps are no whole number of 300-step force rows; the empty Couette channel has no forces.
         QVERIFY_THROWS_EXCEPTION(scaleout::ExportError, scaleout::spartaDeck(*cylinder, {1000, 300}));
-        QCOMPARE(commandsOf(file(scaleout::spartaDeck(*tunnelFor("dsmc-couette"), {4000, 300}),
+        QCOMPARE(commandsOf(file(scaleout::spartaDeck(*tunnelFor("tunnel-couette"), {4000, 300}),
                                  scaleout::kSpartaInput))["run"][1],
                  std::string("4000"));
         QCOMPARE(commandsOf(file(scaleout::spartaDeck(*cylinder, {801, 1}),
@@ -267,7 +267,7 @@ private slots:
                   "https://github.com/sparta/sparta: cd src && make serial)");
         QTemporaryDir dir;
         const std::string folder = dir.path().toStdString();
-        const auto tunnel = tunnelFor("dsmc-cylinder", {{"sample_start", 20.0}});
+        const auto tunnel = tunnelFor("tunnel-cylinder", {{"sample_start", 20.0}});
         const TunnelParams& p = tunnel->parameters();
         const auto deck = scaleout::spartaDeck(*tunnel, {40, 10});
         for (const auto& f : deck.files) writeFileAtomically(folder + "/" + f.name, f.content);

@@ -1,0 +1,57 @@
+// The fluid's registration: its kind, parameters, creator, particle count, series and plots, once.
+#include "FluidSeries.h"
+#include "FluidSpawnGrid.h"
+#include "catalog/ModelDescriptor.h"
+
+namespace pl {
+
+using namespace plot_colours;
+
+namespace {
+PlotPanel densityErrorPanel(bool profile) {
+    PlotPanel panel{"compression ρ/ρ₀ − 1",
+                    {{"density_error_mean", "mean", kBlue}, {"density_error_max", "max", kRed}},
+                    true};
+    if (profile) {
+        panel.xLabel = "iterations done in the last step";
+        panel.profile = true;
+    }
+    return panel;
+}
+} // namespace
+
+const ModelDescriptor& fluidRegistration() {
+    static const ModelDescriptor descriptor{
+        .kind = "fluid",
+        .title = "Fluid (position-based)",
+        .specs = &FluidParams::describe(),
+        .create = []() -> std::unique_ptr<Model> { return std::make_unique<FluidModel>(); },
+        .particleCount =
+            [](const Preset& preset) {
+                const FluidParams p = withValues(FluidParams{}, FluidParams::fields(), preset.params);
+                return static_cast<std::size_t>(fluid::initialFillCount(p, preset.obstacles));
+            },
+        .series = fluidSeriesTable().columns(),
+        .plots = {{"densityErrorPlot", "Density error", densityErrorPanel(true), densityErrorPanel(false)},
+                  {"frontPlot",
+                   "Dam-break front",
+                   {"front Z = z / a",
+                    {{"front_Z", "surge front", kBlue},
+                     {"front_Z_shallow_water", "shallow-water bound 1 + 2T", kGrey, true}},
+                    false,
+                    "front_T",
+                    "T = n t √(g/a)"},
+                   {}},
+                  {"flowPlot",
+                   "Flow",
+                   {"kinetic energy Σ ½ v²", {{"kinetic", "kinetic", kBlue}}},
+                   {"neighbours within h",
+                    {{"neighbours_mean", "mean", kGreen},
+                     {"neighbours_max", "max", kOrange},
+                     {"neighbours_min", "min", kGrey}}}}},
+        .distributions = {},
+    };
+    return descriptor;
+}
+
+} // namespace pl

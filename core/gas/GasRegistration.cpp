@@ -1,0 +1,40 @@
+// The gas's registration: its kind, parameters, creator, particle count, series and plots, once.
+#include "GasSeries.h"
+#include "catalog/ModelDescriptor.h"
+
+namespace pl {
+
+using namespace plot_colours;
+
+const ModelDescriptor& gasRegistration() {
+    static const ModelDescriptor descriptor{
+        .kind = "gas",
+        .title = "Gas (molecular dynamics)",
+        .specs = &GasParams::describe(),
+        .create = []() -> std::unique_ptr<Model> { return std::make_unique<GasModel>(); },
+        .particleCount =
+            [](const Preset& preset) {
+                const GasParams p = withValues(GasParams{}, GasParams::fields(), preset.params);
+                return static_cast<std::size_t>(p.totalCount());
+            },
+        .series = gasSeriesTable().columns(),
+        .plots = {{"energyPlot",
+                   "Energy",
+                   {"energy",
+                    {{"kinetic", "kinetic", kBlue},
+                     {"potential", "potential", kOrange},
+                     {"total", "total", kGrey}}},
+                   {"|E − E₀| / E₀", {{"energy_drift", "relative drift", kRed}}, true}},
+                  {"thermodynamicsPlot",
+                   "Thermodynamics",
+                   {"pressure",
+                    {{"pressure_wall", "P from wall impulses", kBlue},
+                     {"pressure_virial", "P from the virial", kGreen},
+                     {"pressure_ideal", "N kT / A", kGrey}}},
+                   {"kT", {{"kT", "kT", kRed}, {"kT_a", "kT of A", kBlue}, {"kT_b", "kT of B", kOrange}}}}},
+        .distributions = {"speedHistogram"},
+    };
+    return descriptor;
+}
+
+} // namespace pl

@@ -1,0 +1,99 @@
+// Blow-up detection and the hints that explain it (stability limits from the integrator table).
+#include "GasKernels.h"
+#include "GasModel.h"
+
+#include <cmath>
+#include <sstream>
+#include <utility>
+
+namespace pl {
+
+namespace {
+
+std::string fixed(double v, int digits) {
+    std::ostringstream out;
+    out.setf(std::ios::fixed);
+    out.precision(digits);
+    out << v;
+    return out.str();
+}
+
+// a and b with the fewest decimals (2 at least) that tell them apart, so a value just inside a limit
+// never reads as the limit itself (RK4's 2.8284… against 2√2).
+std::pair<std::string, std::string> distinct(double a, double b) {
+    int digits = 2;
+    while (digits < 17 && fixed(a, digits) == fixed(b, digits)) ++digits;
+    return {fixed(a, digits), fixed(b, digits)};
+}
+
+} // namespace
+
+double GasModel::totalEnergy() {
+    refreshEnergies();
+    double kinetic = 0.0, potential = 0.0;
+    const double mass[2] = {params_.a.mass, params_.b.mass};
+    for (std::size_t i = 0; i < state_.size(); ++i) {
+        const double m = mass[state_.species[i]];
+        kinetic += 0.5 * m * (state_.vx[i] * state_.vx[i] + state_.vy[i] * state_.vy[i]);
+        potential += state_.potential[i] + m * params_.appliedGravity() * (state_.y[i] - params_.bottom());
+    }
+    return kinetic + potential;
+}
+
+void GasModel::rebaseEnergy() {
+    const double e = totalEnergy();
+    energyBaseline_ = e;
+    referenceEnergy_ = std::max(referenceEnergy_, e);
+}
+
+std::string GasModel::stabilityHint() const {
+    double omega = 0.0; // stiffest contact: the smallest reduced mass present
+    const bool hasA = params_.a.count > 0, hasB = params_.b.count > 0;
+    if (hasA || !hasB)
+        omega = std::max(omega, gas::contactOmega(params_.stiffness, params_.a.mass, params_.a.mass));
+    if (hasB) omega = std::max(omega, gas::contactOmega(params_.stiffness, params_.b.mass, params_.b.mass));
+    if (hasA && hasB)
+        omega = std::max(omega, gas::contactOmega(params_.stiffness, params_.a.mass, params_.b.mass));
+    const double wdt = omega * std::abs(params_.dt);
+    const GasIntegratorInfo& scheme = gasIntegrator(integrator_);
+    const double limit = scheme.stabilityLimit;
+    const std::string& name = scheme.name;
+    if (integrator_ == GasIntegrator::ExplicitEuler)
+        return "explicit Euler gains energy every step (factor 1 + ω²dt² = 1 + " +
+               formatNumber(wdt * wdt, 3) + " per contact step) and is unstable at any dt: use " +
+               gasIntegrator(GasIntegrator::VelocityVerlet).name;
+    const auto [shownWdt, shownLimit] = distinct(wdt, limit); // compared unrounded, shown apart
+    if (wdt > limit)
+        return "dt·ω = " + shownWdt + " > " + shownLimit + ": " + name + " is unstable; use |dt| < " +
+               formatNumber(limit / omega, 3) + " (about " + formatNumber(std::acos(-1.0) / wdt, 2) +
+               " steps per contact now)";
+    return "dt·ω = " + shownWdt + " is inside the stability limit " + shownLimit +
+           "; look for deeply overlapping disks (spawning, random placement with large k) or a fast "
+           "obstacle, "
+           "or reduce dt";
+}
+
+void GasModel::checkHealth(bool energyCheck) {
+    if (failed()) return;
+    if (escaped_) {
+        fail("a disk moved farther than the box in one step or became NaN", stabilityHint());
+        return;
+    }
+    // A body the user drives does work on the gas, so energy is checked again once it rests (the energy
+    // it gave then becomes the reference, advanceBodies).
+    if (!energyCheck || bodiesMoving()) return;
+    const double e = totalEnergy();
+    if (!std::isfinite(e)) {
+        fail("the total energy is not finite", stabilityHint());
+        return;
+    }
+    const double bound =
+        params_.blowupEnergyFactor * std::max(referenceEnergy_, std::abs(energyBaseline_)) +
+        (params_.wallMode == GasWallMode::Thermal ? 4.0 * params_.wallKT * state_.size() : 0.0);
+    if (e > bound && e > 0)
+        fail("the total energy grew from " + formatNumber(referenceEnergy_, 6) + " to " + formatNumber(e, 6) +
+                 " (more than " + formatNumber(params_.blowupEnergyFactor, 3) + "×)",
+             stabilityHint());
+}
+
+} // namespace pl

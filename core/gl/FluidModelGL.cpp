@@ -1,0 +1,282 @@
+// FluidModelGL: Algorithm 1 as dispatches, and the CPU ↔ GPU hand-over of the particles.
+#include "FluidModelGL.h"
+
+#include "GlProgram.h"
+#include "GpuCellGrid.h"
+#include "GpuObstacles.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace pl::gl {
+
+namespace {
+
+constexpr unsigned kStreamLocal = 256, kPairLocal = 128;
+constexpr std::int64_t kHealthInterval = 64;
+// Cells of side h/2 searched 2 cells out: a dense fluid puts about one particle in each, and the 5×5
+// stencil holds ~25 candidates for ~13 neighbours within h (3×3 cells of side h: ~36; cells sized for
+// two particles each, as for the sparse gas: ~110).
+constexpr int kCellReach = 2;
+constexpr double kParticlesPerCell = 0.1;
+
+} // namespace
+
+struct FluidGpu {
+    ComputeProgram predict{"fluid/fluid_predict.comp"}, lambda{"fluid/fluid_lambda.comp"},
+        correct{"fluid/fluid_correct.comp"}, velocity{"fluid/fluid_velocity.comp"},
+        vorticity{"fluid/fluid_vorticity.comp"}, xsph{"fluid/fluid_xsph.comp"};
+    GpuCellGrid grid;
+    // Cell-ordered state: positions x, velocities v (ping-pong across the sort), predictions p and
+    // their Jacobi partner, λ, ω and a velocity scratch buffer.
+    Buffer x[2], v[2], p, pNext, lambdaBuffer, omega, vScratch, slots, status, errorSums, obstacles;
+    int current = 0;
+    std::size_t count = 0;
+    std::size_t errorGroups = 0; // λ groups per iteration in errorSums
+    bool errorsCurrent = true;   // errorMean_ and errorMax_ hold the last GPU step's errors
+    int dispatches = 0;
+};
+
+FluidModelGL::FluidModelGL(std::shared_ptr<GlContext> context) : GpuHandOver(std::move(context)) {
+    createBuffers();
+    reset();
+}
+
+FluidModelGL::FluidModelGL(std::shared_ptr<GlContext> context, const Preset& preset)
+    : GpuHandOver(std::move(context)) {
+    createBuffers();
+    reset(preset);
+}
+
+void FluidModelGL::createBuffers() {
+    gpu_ = std::make_unique<FluidGpu>();
+    gpu_->status.reserve(16);
+    gpu_->status.fillZero(16);
+}
+
+FluidModelGL::~FluidModelGL() {
+    context_->makeCurrent(); // buffers and programs are deleted in their context
+}
+
+int FluidModelGL::dispatchesLastStep() const {
+    return gpu_->dispatches;
+}
+
+void FluidModelGL::finishPendingWork() const {
+    context_->makeCurrent();
+    glFinish();
+}
+
+SceneView FluidModelGL::sceneViewSharingGpu() const {
+    const FluidGpu& g = *gpu_;
+    if (!drawsFromGpu()) return sceneView();
+    context_->makeCurrent();
+    waitUntilCommandsComplete(); // another context reads these buffers next
+    SceneView view = sceneFrame();
+    GpuParticles p;
+    p.positions = g.x[g.current].id();
+    p.velocities = g.v[g.current].id();
+    p.radius = {float(params_.particleRadius), float(params_.particleRadius)};
+    p.inverseColourMax = float(1.0 / params_.colourSpeedMax);
+    p.count = g.count;
+    view.gpu = p;
+    return view;
+}
+
+void FluidModelGL::upload() {
+    FluidGpu& g = *gpu_;
+    const std::size_t n = state_.size();
+    g.count = n;
+    std::vector<float> x(2 * n), v(2 * n);
+    for (std::size_t i = 0; i < n; ++i) {
+        x[2 * i] = float(state_.x[i]), x[2 * i + 1] = float(state_.y[i]);
+        v[2 * i] = float(state_.vx[i]), v[2 * i + 1] = float(state_.vy[i]);
+    }
+    g.current = 0;
+    g.x[0].uploadVector(x);
+    g.v[0].uploadVector(v);
+    for (Buffer* b : {&g.x[1], &g.v[1], &g.p, &g.pNext, &g.vScratch, &g.slots}) b->reserve(n * 8);
+    for (Buffer* b : {&g.lambdaBuffer, &g.omega}) b->reserve(n * 4);
+    // Cells at least as wide as the kernel support (the CPU's search radius only adds pairs beyond h,
+    // where every kernel is zero).
+    g.grid.configure(0.0, 0.0, params_.boxWidth, params_.boxHeight, params_.h / kCellReach, n,
+                     kParticlesPerCell);
+}
+
+void FluidModelGL::download() const {
+    FluidGpu& g = *gpu_;
+    const auto x = g.x[g.current].downloadVector<float>(2 * g.count);
+    const auto v = g.v[g.current].downloadVector<float>(2 * g.count);
+    state_.clear();
+    for (std::size_t i = 0; i < g.count; ++i) state_.append(x[2 * i], x[2 * i + 1], v[2 * i], v[2 * i + 1]);
+    if (!g.errorsCurrent) {
+        const auto iterations = static_cast<std::size_t>(params_.iterations);
+        const auto sums = g.errorSums.downloadVector<float>(2 * iterations * g.errorGroups);
+        errorMean_.assign(iterations, 0.0);
+        errorMax_.assign(iterations, 0.0);
+        for (std::size_t k = 0; k < iterations; ++k) {
+            double sum = 0.0, largest = 0.0;
+            for (std::size_t gi = 0; gi < g.errorGroups; ++gi) {
+                sum += sums[2 * (k * g.errorGroups + gi)];
+                largest = std::max<double>(largest, sums[2 * (k * g.errorGroups + gi) + 1]);
+            }
+            errorMean_[k] = g.count > 0 ? sum / double(g.count) : 0.0;
+            errorMax_[k] = largest;
+        }
+        g.errorsCurrent = true;
+    }
+}
+
+void FluidModelGL::setCommonUniforms(ComputeProgram& p) const {
+    const FluidGpu& g = *gpu_;
+    const fluid::Box box = confinementBox();
+    const fluid::WallJitter jitter = wallJitter();
+    p.set("count", unsigned(g.count));
+    p.set("kernelH", float(kernels_.h));
+    p.set("kernelH2", float(kernels_.h2));
+    p.set("poly6", float(kernels_.poly6));
+    p.set("spikyGrad", float(kernels_.spikyGrad));
+    p.set("selfWeight", float(kernels_.selfWeight()));
+    p.set("scorrK", float(scorr_.k));
+    p.set("scorrInverseReference", float(scorr_.inverseReference));
+    p.set("scorrN", scorr_.n);
+    p.set("confinement", float(box.left), float(box.bottom), float(box.right), float(box.top));
+    p.set("margin", float(params_.particleRadius));
+    p.set("obstacleCount", unsigned(obstacles_.size()));
+    p.set("seedWords", unsigned(jitter.seed), unsigned(jitter.seed >> 32));
+    p.set("stepWords", unsigned(jitter.step), unsigned(jitter.step >> 32));
+    p.set("jitterAmount", float(jitter.amount));
+    p.set("inverseRest", float(1.0 / restDensity_));
+    g.grid.setUniforms(p);
+    p.set("cellReach", kCellReach);
+}
+
+void FluidModelGL::advance(double /*h*/) { // h = dt, as FluidModel::advance
+    FluidGpu& g = *gpu_;
+    context_->makeCurrent();
+    // Spawning is the only way past the cap: drain before the particles go up.
+    if (!gpuCurrent()) drainOverCap();
+    pushState();
+    g.dispatches = 0;
+    const std::size_t n = g.count;
+    advanceBodies(); // on the CPU: a handful of bodies
+    uploadObstacles(g.obstacles, obstacles_);
+    const double gx = params_.accelerationX(), gy = params_.accelerationY();
+
+    // Lines 1–7: predict, then sort by the cell of the prediction (neighbours come from the cells).
+    ComputeProgram& predict = g.predict;
+    predict.use();
+    setCommonUniforms(predict);
+    predict.set("dt", float(params_.dt));
+    predict.set("gravity", float(gx), float(gy));
+    auto bindPredict = [&] {
+        g.x[g.current].bind(0);
+        g.v[g.current].bind(1);
+        g.x[1 - g.current].bind(4);
+        g.v[1 - g.current].bind(5);
+        g.p.bind(6);
+        g.grid.counts().bind(7);
+        g.slots.bind(9);
+        g.grid.starts().bind(11);
+    };
+    bindPredict();
+    predict.set("scatterPass", 0);
+    predict.dispatch(n, kStreamLocal);
+    storageBarrier();
+    g.grid.scan();
+    predict.use();
+    bindPredict();
+    predict.set("scatterPass", 1);
+    predict.dispatch(n, kStreamLocal);
+    storageBarrier();
+    g.current = 1 - g.current;
+    g.dispatches += 2 + g.grid.scanDispatches();
+
+    // Lines 8–19: K Jacobi iterations of λ and Δx.
+    const auto iterations = static_cast<std::size_t>(params_.iterations);
+    g.errorGroups = groupsFor(n, kPairLocal);
+    g.errorSums.reserve(std::max<std::size_t>(1, iterations * g.errorGroups) * 8);
+    g.grid.starts().bind(8);
+    for (std::size_t k = 0; k < iterations; ++k) {
+        g.lambda.use();
+        setCommonUniforms(g.lambda);
+        g.lambda.set("epsilon", float(params_.epsilon));
+        g.lambda.set("errorOffset", unsigned(k * g.errorGroups));
+        g.p.bind(0);
+        g.lambdaBuffer.bind(1);
+        g.errorSums.bind(2);
+        g.lambda.dispatch(n, kPairLocal);
+        storageBarrier();
+        g.correct.use();
+        setCommonUniforms(g.correct);
+        g.p.bind(0);
+        g.lambdaBuffer.bind(1);
+        g.pNext.bind(2);
+        g.correct.dispatch(n, kPairLocal);
+        storageBarrier();
+        std::swap(g.p, g.pNext);
+        g.dispatches += 2;
+    }
+
+    // Lines 20–22: velocities from the displacement, vorticity confinement, XSPH.
+    g.velocity.use();
+    setCommonUniforms(g.velocity);
+    g.velocity.set("inverseDt", float(1.0 / params_.dt));
+    g.x[g.current].bind(0);
+    g.p.bind(1);
+    g.v[g.current].bind(2);
+    g.status.bind(10);
+    g.velocity.dispatch(n, kStreamLocal);
+    storageBarrier();
+    ++g.dispatches;
+    if (params_.vorticity > 0) {
+        g.vorticity.use();
+        setCommonUniforms(g.vorticity);
+        g.vorticity.set("strength", float(params_.vorticity * params_.dt));
+        g.p.bind(0);
+        g.v[g.current].bind(1);
+        g.omega.bind(2);
+        g.vScratch.bind(3);
+        for (int pass = 0; pass < 2; ++pass) {
+            g.vorticity.set("pass_", pass);
+            g.vorticity.dispatch(n, kPairLocal);
+            storageBarrier();
+        }
+        std::swap(g.v[g.current], g.vScratch);
+        g.dispatches += 2;
+    }
+    if (params_.xsph > 0) {
+        g.xsph.use();
+        setCommonUniforms(g.xsph);
+        g.xsph.set("viscosity", float(params_.xsph));
+        g.p.bind(0);
+        g.v[g.current].bind(1);
+        g.vScratch.bind(3);
+        g.xsph.dispatch(n, kPairLocal);
+        storageBarrier();
+        std::swap(g.v[g.current], g.vScratch);
+        ++g.dispatches;
+    }
+    // Line 23: x ← x*, by exchanging the buffers.
+    std::swap(g.x[g.current], g.p);
+}
+
+void FluidModelGL::afterStep() {
+    steppedOnGpu();
+    gpu_->errorsCurrent = false;
+    if (stepCount() % kHealthInterval == 0) checkGpuHealth();
+}
+
+void FluidModelGL::checkGpuHealth() {
+    std::uint32_t status[4];
+    gpu_->status.download(status, sizeof status);
+    if (status[0] == 0) return;
+    pullState();
+    std::ostringstream hint;
+    hint << "the solver diverged at dt = " << params_.dt << " with " << params_.iterations
+         << " iterations and ε = " << params_.epsilon << ": use a smaller dt, more iterations or a larger ε";
+    fail("a particle has a non-finite velocity", hint.str());
+}
+
+} // namespace pl::gl

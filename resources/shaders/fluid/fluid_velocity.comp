@@ -1,0 +1,23 @@
+#version 430
+// Algorithm 1, lines 20–21 (FluidModel::updateVelocities): v ← (x* − x)/Δt; in contact with an obstacle a
+// particle does not move into it faster than it moves. Flags non-finite velocities (a diverged solve).
+layout(local_size_x = 256) in;
+#include "common/common.glsl"
+#include "fluid/fluid_boundaries.glsl"
+
+layout(std430, binding = 0) readonly buffer Pos { vec2 x[]; };
+layout(std430, binding = 1) readonly buffer Predicted { vec2 p[]; };
+layout(std430, binding = 2) writeonly buffer Vel { vec2 v[]; };
+layout(std430, binding = 10) buffer Status { uint status[]; }; // [0]: a velocity is not finite
+
+uniform uint count;
+uniform float inverseDt;
+
+void main() {
+    const uint i = itemIndex();
+    if (i >= count) return;
+    vec2 velocity = (p[i] - x[i]) * inverseDt;
+    if (obstacleCount > 0u) obstacleVelocity(p[i], velocity);
+    if (any(isnan(velocity)) || any(isinf(velocity))) atomicOr(status[0], 1u);
+    v[i] = velocity;
+}

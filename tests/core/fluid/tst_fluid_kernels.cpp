@@ -1,0 +1,106 @@
+// The PBF kernels (docs/fluid.md#kernel-normalisation): the 2D constants integrate to 1 over the plane, the
+// seed's 3D ones to 315/(256 h) and 3/(2 h); the spiky gradient is the derivative of the spiky kernel and
+// antisymmetric in the pair; s_corr is −k at r = Δq h.
+#include "fluid/FluidKernels.h"
+#include "fluid/FluidParams.h"
+
+#include <QtTest>
+#include <numbers>
+
+using namespace pl;
+
+namespace {
+
+// ∫ f(r) 2π r dr over [0, h] by composite Simpson with many panels: exact to ~1e-12 for these polynomials.
+template <class F> double integrateOverDisc(F f, double h) {
+    constexpr int panels = 20000;
+    const double step = h / panels;
+    double sum = 0;
+    for (int k = 0; k <= panels; ++k) {
+        const double r = k * step;
+        const double weight = (k == 0 || k == panels) ? 1 : (k % 2 ? 4 : 2);
+        sum += weight * f(r) * 2 * std::numbers::pi * r;
+    }
+    return sum * step / 3;
+}
+
+} // namespace
+
+class TestFluidKernels : public QObject {
+    Q_OBJECT
+private slots:
+    void twoDimensionalConstantsIntegrateToOne_data() {
+        QTest::addColumn<double>("h");
+        QTest::newRow("seed h") << 1.1;
+        QTest::newRow("small") << 0.25;
+        QTest::newRow("large") << 3.0;
+    }
+    void twoDimensionalConstantsIntegrateToOne() {
+        QFETCH(double, h);
+        const auto k = fluid::Kernels::make(h, FluidKernelConstants::Normalised2d, true);
+        // W at r = 0 through the self weight (pairs at r = 0 weigh nothing, as in the seed).
+        const auto poly6 = [&](double r) { return r > 0 ? k.w(r * r) : k.selfWeight(); };
+        QVERIFY(std::abs(integrateOverDisc(poly6, h) - 1.0) < 1e-9);
+        QVERIFY(std::abs(integrateOverDisc([&](double r) { return k.wSpiky(r); }, h) - 1.0) < 1e-9);
+    }
+
+    void seedConstantsAreTheThreeDimensionalOnes() {
+        const double h = 1.1;
+        const auto k = fluid::Kernels::make(h, FluidKernelConstants::Seed3d, true);
+        const auto poly6 = [&](double r) { return r > 0 ? k.w(r * r) : k.selfWeight(); };
+        QVERIFY(std::abs(integrateOverDisc(poly6, h) - 315.0 / (256.0 * h)) < 1e-9);
+        QVERIFY(std::abs(integrateOverDisc([&](double r) { return k.wSpiky(r); }, h) - 1.5 / h) < 1e-9);
+        // The seed's code: poly6Value(r) = 315/(64π) ((h² − r²)/h³)³.
+        const double r = 0.6;
+        const double x = (h * h - r * r) / (h * h * h);
+        QCOMPARE(k.w(r * r), 315.0 / (64.0 * std::numbers::pi) * x * x * x);
+        QCOMPARE(fluid::Kernels::make(h, FluidKernelConstants::Seed3d, false).selfWeight(), 0.0);
+        QCOMPARE(k.w(0.0), 0.0);
+        QCOMPARE(k.w(h * h), 0.0);
+    }
+
+    void spikyGradientIsTheKernelsDerivative_data() {
+        QTest::addColumn<QString>("normalisation");
+        QTest::newRow("2d") << "2d";
+        QTest::newRow("seed-3d") << "seed-3d";
+    }
+    void spikyGradientIsTheKernelsDerivative() {
+        QFETCH(QString, normalisation);
+        const double h = 1.1;
+        const auto k =
+            fluid::Kernels::make(h, *choiceNamed<FluidKernelConstants>(normalisation.toStdString()), false);
+        for (double r : {0.05, 0.3, 0.7, 1.0, 1.09}) {
+            const double dr = 1e-6;
+            const double numeric = (k.wSpiky(r + dr) - k.wSpiky(r - dr)) / (2 * dr);
+            // ∇W = gradFactor · (x_i − x_j); along r̂ its length is gradFactor · r.
+            QVERIFY2(std::abs(k.gradFactor(r * r) * r - numeric) < 1e-6 * std::abs(numeric) + 1e-9,
+                     qPrintable(QString("r = %1").arg(r)));
+        }
+        QCOMPARE(k.gradFactor(0.0), 0.0);
+        QCOMPARE(k.gradFactor(h * h), 0.0);
+    }
+
+    void spikyGradientIsAntisymmetric() {
+        const auto k = fluid::Kernels::make(1.1, FluidKernelConstants::Normalised2d, true);
+        const double xi = 0.31, yi = -0.12, xj = -0.27, yj = 0.45;
+        const double dx = xi - xj, dy = yi - yj, r2 = dx * dx + dy * dy;
+        const double gijx = k.gradFactor(r2) * dx, gijy = k.gradFactor(r2) * dy;
+        const double gjix = k.gradFactor(r2) * -dx, gjiy = k.gradFactor(r2) * -dy;
+        QCOMPARE(gijx + gjix, 0.0);
+        QCOMPARE(gijy + gjiy, 0.0);
+        QVERIFY(gijx < 0); // ∇_i W points from i towards j: W falls as i moves away
+    }
+
+    void artificialPressureIsMinusKAtTheReferenceDistance() {
+        const double h = 1.1;
+        const auto k = fluid::Kernels::make(h, FluidKernelConstants::Seed3d, false);
+        const double dq = 0.3 * h;
+        fluid::ArtificialPressure s{0.001, 1.0 / k.w(dq * dq), 4};
+        QVERIFY(std::abs(s(k.w(dq * dq)) + 0.001) < 1e-15);
+        QVERIFY(s(k.w(0.9 * 0.9)) > -0.001 && s(k.w(0.9 * 0.9)) < 0); // weaker further out
+        QCOMPARE(s(0.0), 0.0);
+    }
+};
+
+QTEST_APPLESS_MAIN(TestFluidKernels)
+#include "tst_fluid_kernels.moc"

@@ -1,0 +1,239 @@
+// The mouse tools as kinematic bodies: a dragged obstacle or the piston moves at no more than the tool
+// speed every step, so what the gas feels is the same at any frame rate. Checked against mechanics (a
+// wall moving at u sends a resting disk off at 2u) and thermodynamics (the 2D adiabat T·A = const).
+#include "GasTestScenes.h"
+#include "catalog/ModelCatalog.h"
+#include "common/KinematicDrive.h"
+
+#include <QtTest>
+#include <optional>
+
+using namespace pl;
+
+namespace {
+
+GasModel emptyBox(const ParamValues& extra = {}) {
+    ParamValues values{{"count_a", 1.0}, {"diameter_a", 0.02}, {"stiffness", 1e5}, {"dt", 1e-3}};
+    for (const auto& [k, v] : extra) values[k] = v;
+    return test::makeGas(values);
+}
+
+// A dilute gas with a piston at the right wall: 2D ideal gas (area fraction 0.3 %), with contacts often
+// enough that the energy the piston gives to v_x is shared with v_y long before the area changes much.
+GasModel pistonGas(double pistonSpeed) {
+    return test::makeGas({{"count_a", 400.0},
+                          {"diameter_a", 0.006},
+                          {"stiffness", 2e5},
+                          {"dt", 2e-4},
+                          {"init_placement", std::string("lattice")},
+                          {"init_velocity", std::string("maxwell-boltzmann")},
+                          {"init_kT", 0.5},
+                          {"piston_enabled", true},
+                          {"piston_speed", pistonSpeed}});
+}
+
+constexpr double kSlow = 0.02, kFast = 1.0; // piston speeds [× rms speed]
+
+double area(const GasModel& model) {
+    const GasParams& p = model.parameters();
+    return (p.right() - p.left()) * p.boxHeight;
+}
+
+// Runs until the piston stops, then the mean kT over a further stretch (the gas relaxes at fixed area).
+double driveAndSettle(GasModel& model, int direction) {
+    model.drivePiston(direction);
+    while (model.pistonDirection() != 0 && !model.failure()) model.step();
+    double kT = 0;
+    constexpr int kSamples = 10;
+    for (int k = 0; k < kSamples; ++k) {
+        for (int s = 0; s < 200; ++s) model.step();
+        kT += model.observe().kT / kSamples;
+    }
+    return kT;
+}
+
+// Compresses at the piston speed until the piston passes the middle of the box (half the area).
+double compressToHalf(GasModel& model) {
+    model.drivePiston(-1);
+    while (model.parameters().pistonX > 0.0 && !model.failure()) model.step();
+    return driveAndSettle(model, 0);
+}
+
+// gas-classroom relaxed to Maxwell–Boltzmann around a disc obstacle (the disks it landed on pushed
+// out and relaxed too), made once and copied for every drag.
+const GasModel& relaxedClassroomWithDisc() {
+    static const GasModel relaxed = [] {
+        GasModel model;
+        model.reset(loadPreset("gas-classroom"));
+        model.addObstacle({Obstacle::Shape::Disc, -0.6, 0.0, 0.12});
+        for (int s = 0; s < 3000; ++s) model.step();
+        return model;
+    }();
+    return relaxed;
+}
+
+// The mouse as a teacher moves it: from x = −0.6 to 0.6 across `frames` frames, `stepsPerFrame` steps
+// each, then let go and wait until the disc rests. Returns kT after / kT before.
+double dragAcross(int stepsPerFrame, int frames, std::optional<double> toolSpeed = {}) {
+    GasModel model = relaxedClassroomWithDisc();
+    if (toolSpeed) model.setParams({{"tool_speed", *toolSpeed}});
+    const double before = model.observe().kT;
+    const double x0 = -0.6, x1 = 0.6;
+    for (int f = 1; f <= frames; ++f) {
+        model.dragObstacle(0, x0 + (x1 - x0) * f / frames, 0.0);
+        for (int s = 0; s < stepsPerFrame; ++s) model.step();
+    }
+    model.releaseObstacle(0);
+    while (model.bodiesMoving() && !model.failure()) model.step();
+    for (int s = 0; s < 500; ++s) model.step();
+    return model.observe().kT / before;
+}
+
+} // namespace
+
+class TestGasTools : public QObject {
+    Q_OBJECT
+private slots:
+    void boundedMoveNeverOvershoots() {
+        const BoundedMove far = boundedMove(0, 0, 3, 4, 2.0, 0.5); // reach 1 of a distance 5
+        QCOMPARE(far.dx, 0.6);
+        QCOMPARE(far.dy, 0.8);
+        QVERIFY(!far.arrived);
+        const BoundedMove near = boundedMove(0, 0, 0.3, 0.4, 2.0, -0.5); // reversed time reaches as far
+        QCOMPARE(near.dx, 0.3);
+        QVERIFY(near.arrived);
+    }
+
+    void draggedObstacleMovesAtTheToolSpeed() {
+        GasModel model = emptyBox({{"tool_speed", 0.5}}); // × the initial speed 1
+        model.addObstacle({Obstacle::Shape::Disc, -0.5, 0.0, 0.1});
+        QCOMPARE(model.toolSpeed(), 0.5);
+        model.dragObstacle(0, 0.5, 0.0); // a jump of one box half-width in one "frame"
+        for (int s = 0; s < 100; ++s) {
+            const double x = model.obstacles()[0].x;
+            model.step();
+            QVERIFY(std::abs(model.obstacles()[0].x - x - 0.5e-3) < 1e-12);
+            QCOMPARE(model.obstacles()[0].vx, 0.5);
+        }
+        // Let go: it carries on to the last target and rests there.
+        model.releaseObstacle(0);
+        QVERIFY(model.bodiesMoving());
+        for (int s = 0; s < 3000 && model.bodiesMoving(); ++s) model.step();
+        QVERIFY(!model.bodiesMoving());
+        QCOMPARE(model.obstacles()[0].x, 0.5);
+        QCOMPARE(model.obstacles()[0].vx, 0.0);
+        // Targets outside the box are clamped to it.
+        model.dragObstacle(0, 7.0, -9.0);
+        model.releaseObstacle(0);
+        for (int s = 0; s < 5000 && model.bodiesMoving(); ++s) model.step();
+        QCOMPARE(model.obstacles()[0].x, 1.0);
+        QCOMPARE(model.obstacles()[0].y, -1.0);
+    }
+
+    void placingWhilePausedIsAtRest() {
+        GasModel model = emptyBox();
+        model.addObstacle({Obstacle::Shape::Disc, -0.5, 0.0, 0.1});
+        model.dragObstacle(0, 0.5, 0.0);
+        model.placeObstacle(0, 0.2, 0.3);
+        QVERIFY(!model.bodiesMoving());
+        QCOMPARE(model.obstacles()[0].x, 0.2);
+        model.step();
+        QCOMPARE(model.obstacles()[0].x, 0.2);
+        QCOMPARE(model.obstacles()[0].vx, 0.0);
+    }
+
+    void draggedObstacleImpartsItsVelocity() {
+        // A disk at rest struck by a wall moving at u leaves at 2u (elastic reflection off a massive wall).
+        GasModel model = emptyBox({{"tool_speed", 0.5}});
+        model.addObstacle({Obstacle::Shape::Box, -0.2, 0.0, 0.1, 0.1, 0.2});
+        model.placeParticles({{0.0, 0.0, 0.0, 0.0, 0}});
+        model.dragObstacle(0, 0.5, 0.0); // reaches the disk after ≈ 160 steps
+        for (int s = 0; s < 400; ++s) model.step();
+        QVERIFY(std::abs(model.state().vx[0] - 2 * 0.5) < 1e-12);
+        QVERIFY(model.state().x[0] > model.obstacles()[0].x + 0.11);
+    }
+
+    void removingADraggedObstacleEndsItsDrive() {
+        GasModel model = emptyBox();
+        model.addObstacle({Obstacle::Shape::Disc, -0.5, 0.0, 0.1});
+        model.addObstacle({Obstacle::Shape::Disc, 0.5, 0.5, 0.1});
+        model.dragObstacle(1, 0.5, -0.5);
+        model.removeObstacle(0); // the dragged one is now index 0 and keeps its drive
+        model.step();
+        QVERIFY(model.obstacles()[0].y < 0.5);
+        model.removeObstacle(0);
+        QVERIFY(!model.bodiesMoving());
+        model.step();
+    }
+
+    void dragHeatsLittleAtAnyFrameRate() {
+        // The same hand movement (30 frames, half a second at 60 fps) at 1 and at 20 steps per frame. The
+        // disc never moves faster than the tool speed, so the gas is stirred, not shock-heated.
+        const double slow = dragAcross(1, 30), fast = dragAcross(20, 30);
+        qInfo("kT after / before the drag: %.4f at 1 step per frame, %.4f at 20", slow, fast);
+        QVERIFY2(std::abs(slow - 1) < 0.1, qPrintable(QString::number(slow)));
+        QVERIFY2(std::abs(fast - 1) < 0.1, qPrintable(QString::number(fast)));
+        // Without the bound (a disc five times as fast as the rms speed, as one that kept up with the mouse
+        // at 1 step per frame) the same movement shock-heats the gas.
+        const double unbounded = dragAcross(1, 30, 5.0);
+        qInfo("kT after / before at tool_speed 5: %.4f", unbounded);
+        QVERIFY2(unbounded > 1.2, qPrintable(QString::number(unbounded)));
+    }
+
+    void slowCompressionFollowsTheAdiabat() {
+        // 2D monatomic ideal gas: γ = (f + 2)/f = 2, so T·A^(γ−1) = T·A is constant on the adiabat.
+        // Halving the area slowly doubles kT; expanding back slowly returns it.
+        GasModel model = pistonGas(kSlow);
+        const double kT0 = model.observe().kT, a0 = area(model);
+        const double kT1 = compressToHalf(model);
+        const double a1 = area(model);
+        QVERIFY(!model.failure());
+        const double compressed = kT1 * a1 / (kT0 * a0);
+        const double kT2 = driveAndSettle(model, +1);
+        const double expanded = kT2 * area(model) / (kT0 * a0);
+        qInfo("slow (%.2f v_rms): kT %.4f -> %.4f at A/2 -> %.4f at A; T·A ratio %.4f compressed, %.4f "
+              "back",
+              kSlow, kT0, kT1, kT2, compressed, expanded);
+        QVERIFY2(std::abs(compressed - 1) < 0.05, qPrintable(QString::number(compressed)));
+        QVERIFY2(kT2 < 0.75 * kT1, "expansion cools");
+        QVERIFY2(std::abs(expanded - 1) < 0.05, qPrintable(QString::number(expanded)));
+    }
+
+    void fastCompressionHeatsMore() {
+        // At the rms speed the piston outruns the gas's relaxation: a shock heats beyond the adiabat.
+        GasModel slow = pistonGas(kSlow), fast = pistonGas(kFast);
+        const double kT0 = fast.observe().kT;
+        const double slowRatio = compressToHalf(slow) / kT0, fastRatio = compressToHalf(fast) / kT0;
+        qInfo("kT ratio at half the area: %.4f slow, %.4f fast", slowRatio, fastRatio);
+        QVERIFY(!fast.failure());
+        QVERIFY2(fastRatio > slowRatio * 1.1, qPrintable(QString("%1 vs %2").arg(fastRatio).arg(slowRatio)));
+    }
+
+    void drivenPistonStopsAtTheEnds() {
+        GasModel model = emptyBox({{"count_a", 0.0}, {"piston_enabled", true}, {"piston_speed", 1.0}});
+        model.drivePiston(+1); // already at the right wall: nothing to do
+        model.step();
+        QCOMPARE(model.pistonDirection(), 0);
+        model.drivePiston(-1);
+        for (int s = 0; s < 20000 && model.pistonDirection() != 0; ++s) model.step();
+        QCOMPARE(model.pistonDirection(), 0);
+        QVERIFY(std::abs(model.parameters().pistonX - (-1.0 + 0.02)) < 1e-12); // one diameter from the wall
+        // A dense gas stops it where the disks would cover 70 % of the area, before they jam.
+        Preset classroom = loadPreset("gas-classroom");
+        classroom.params["piston_enabled"] = true;
+        classroom.params["piston_speed"] = 0.3;
+        GasModel dense;
+        dense.reset(classroom);
+        dense.drivePiston(-1);
+        for (int s = 0; s < 60000 && dense.pistonDirection() != 0; ++s) dense.step();
+        QCOMPARE(dense.pistonDirection(), 0);
+        QVERIFY(!dense.failure());
+        const double covered = 2500 * std::acos(-1.0) / 4 * 0.02 * 0.02;
+        QVERIFY(std::abs((dense.pistonX() + 1.0) * 2.0 - covered / 0.7) < 1e-9);
+        for (int s = 0; s < 1000; ++s) dense.step(); // hot and dense, but no blow-up
+        QVERIFY(!dense.failure());
+    }
+};
+
+QTEST_APPLESS_MAIN(TestGasTools)
+#include "tst_gas_tools.moc"

@@ -1,0 +1,294 @@
+// The model contract, checked for every registered kind on every backend it has (a row per kind and
+// backend, built from the catalog: a new kind is covered without editing this file). The base owns the
+// step and the clock; a snapshot continues bit for bit on the CPU reference; a refused preset leaves the
+// model as it was; the direction of time is refused where the dynamics cannot reverse and undoes the run
+// where they can; and a kind with mouse tools keeps the SceneTools rules:
+// centres and drag targets clamped into the box, indices checked, a placed body at rest, the piston's
+// tools refused without a piston, heat / cool refusing a factor that is not positive.
+#include "BackendRows.h"
+#include "catalog/ModelCatalog.h"
+#include "common/Snapshot.h"
+#include "gl/GpuModels.h"
+
+#include <QtTest>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+using namespace pl;
+
+namespace {
+
+// The preset every check starts from: the kind's first built-in preset (its teaching scene).
+Preset contractPreset(const std::string& kind) {
+    const std::vector<const BuiltinPreset*> presets = builtinPresetsOf(kind);
+    return presets.empty() ? defaultPreset(*findModel(kind)) : presets.front()->preset;
+}
+
+std::string particles(const Model& model) {
+    std::ostringstream out;
+    model.writeParticles(out);
+    return out.str();
+}
+
+double dtOf(const Model& model) {
+    return std::get<double>(model.params().at("dt"));
+}
+
+struct Box {
+    double left, bottom, right, top;
+    double centreX() const { return 0.5 * (left + right); }
+    double centreY() const { return 0.5 * (bottom + top); }
+    double width() const { return right - left; }
+};
+
+Box boxOf(const Model& model) {
+    const SceneView view = model.sceneView();
+    return {view.left, view.bottom, view.right, view.top};
+}
+
+Obstacle discAt(double x, double y, double radius) {
+    Obstacle disc;
+    disc.x = x;
+    disc.y = y;
+    disc.radius = radius;
+    return disc;
+}
+
+// A copy of preset with its first bounded number one step past the spec's maximum: refused on reset.
+std::optional<Preset> refusedVariant(const Preset& preset, const std::vector<ParamSpec>& specs) {
+    for (const ParamSpec& spec : specs) {
+        if (spec.kind != ParamKind::Real || !std::isfinite(spec.max) || spec.max <= 0) continue;
+        Preset bad = preset;
+        bad.params[spec.key] = 2.0 * spec.max;
+        return bad;
+    }
+    return std::nullopt;
+}
+
+} // namespace
+
+class TestModelContract : public QObject {
+    Q_OBJECT
+
+    // One row per registered kind and backend: "gas/cpu", "gas/gl", "dsmc/cpu", …
+    static void kindsAndBackends() {
+        QTest::addColumn<QString>("kind");
+        QTest::addColumn<QString>("backend");
+        for (const ModelDescriptor& d : modelCatalog()) {
+            const QString kind = QString::fromStdString(d.kind);
+            QTest::newRow(qPrintable(kind + "/cpu")) << kind << QStringLiteral("cpu");
+            if (gl::findGpuModel(d.kind))
+                QTest::newRow(qPrintable(kind + "/gl")) << kind << QStringLiteral("gl");
+        }
+    }
+
+    // The row's model, reset to the kind's contract preset; skips a GL row without a GL 4.3 context.
+#define PL_CONTRACT_MODEL(made)                                                                              \
+    QFETCH(QString, kind);                                                                                   \
+    const Preset preset = contractPreset(kind.toStdString());                                                \
+    PL_MODEL_ON_ROW_BACKEND(made, preset);                                                                   \
+    Model& model = *made.model
+
+private slots:
+    void everyKindHasARow() {
+        QVERIFY(modelCatalog().size() >= 4);
+        for (const ModelDescriptor& d : modelCatalog())
+            QVERIFY2(d.create && d.specs && d.particleCount, d.kind.c_str());
+    }
+
+    // ModelBase::step(): one count and one signed dt per step, whatever the model.
+    void theBaseOwnsTheClock_data() {
+        kindsAndBackends();
+    }
+    void theBaseOwnsTheClock() {
+        PL_CONTRACT_MODEL(made);
+        QCOMPARE(model.stepCount(), std::int64_t(0));
+        QCOMPARE(model.time(), 0.0);
+        const double dt = dtOf(model);
+        double expected = 0.0;
+        for (int s = 1; s <= 5; ++s) {
+            model.step();
+            expected += dt;
+            QCOMPARE(model.stepCount(), std::int64_t(s));
+            QCOMPARE(model.time(), expected);
+        }
+        QVERIFY(!model.failure());
+    }
+
+    // Saved as text, read back and continued: on the CPU reference the trajectories agree bit for bit
+    // with the run that never stopped. A GPU model restores the clock and the particles (its float
+    // buffers and atomics make no promise of bit identity between two GPU runs).
+    void snapshotContinuesWhereItWasTaken_data() {
+        kindsAndBackends();
+    }
+    void snapshotContinuesWhereItWasTaken() {
+        PL_CONTRACT_MODEL(made);
+        constexpr int kBefore = 15, kAfter = 15;
+        for (int s = 0; s < kBefore; ++s) model.step();
+        const std::string text = serializeSnapshot(takeSnapshot(model), model.paramSpecs());
+        const Snapshot snapshot = parseSnapshot(text, specsForModel, "contract");
+        const test::BackendModel restoredMade = test::modelOnBackend(backend, snapshot.preset);
+        QVERIFY2(restoredMade.model, restoredMade.failure.c_str());
+        Model& restored = *restoredMade.model;
+        restored.restoreState(snapshot.state);
+        QCOMPARE(restored.stepCount(), model.stepCount());
+        QCOMPARE(restored.time(), model.time());
+        QCOMPARE(restored.particleCount(), model.particleCount());
+        if (backend != QLatin1String("cpu")) return;
+        QCOMPARE(particles(restored), particles(model));
+        for (int s = 0; s < kAfter; ++s) {
+            model.step();
+            restored.step();
+        }
+        QVERIFY(!model.failure());
+        QCOMPARE(restored.time(), model.time());
+        QVERIFY2(particles(restored) == particles(model), "the trajectories parted");
+        const std::vector<double> a = model.sampleSeries(), b = restored.sampleSeries();
+        QCOMPARE(a.size(), b.size());
+        for (std::size_t k = 0; k < a.size(); ++k)
+            QVERIFY2(a[k] == b[k] || (std::isnan(a[k]) && std::isnan(b[k])),
+                     qPrintable(QString("%1: %2 vs %3")
+                                    .arg(QString::fromStdString(model.seriesColumns()[k]))
+                                    .arg(a[k], 0, 'g', 17)
+                                    .arg(b[k], 0, 'g', 17)));
+    }
+
+    // A preset refused by reset(preset) leaves the parameters, the seed and the particles as they were.
+    void refusedPresetLeavesTheModelAsItWas_data() {
+        kindsAndBackends();
+    }
+    void refusedPresetLeavesTheModelAsItWas() {
+        PL_CONTRACT_MODEL(made);
+        const std::optional<Preset> bad = refusedVariant(preset, model.paramSpecs());
+        QVERIFY2(bad, "the kind has no bounded real parameter to refuse");
+        const ParamValues before = model.params();
+        const std::string particlesBefore = particles(model);
+        QVERIFY_THROWS_EXCEPTION(PresetError, model.reset(*bad));
+        QVERIFY(model.params() == before);
+        QCOMPARE(model.toPreset().seed, preset.seed);
+        QCOMPARE(particles(model), particlesBefore);
+        Preset other = preset;
+        other.model = "no-such-kind";
+        QVERIFY_THROWS_EXCEPTION(PresetError, model.reset(other));
+        QVERIFY(model.params() == before);
+    }
+
+    // Only reversible dynamics accept −1; there, as many steps back return to the start (time exactly,
+    // the particles to round-off). Turning time round changes no parameter.
+    void directionOfTimeIsTheModels_data() {
+        kindsAndBackends();
+    }
+    void directionOfTimeIsTheModels() {
+        PL_CONTRACT_MODEL(made);
+        QCOMPARE(model.timeDirection(), 1);
+        QVERIFY_THROWS_EXCEPTION(std::invalid_argument, model.setTimeDirection(0));
+        if (!model.reversible()) {
+            QVERIFY_THROWS_EXCEPTION(std::logic_error, model.setTimeDirection(-1));
+            QCOMPARE(model.timeDirection(), 1);
+            return;
+        }
+        const ParamValues params = model.params();
+        const SceneView start = model.sceneView();
+        std::ostringstream startText;
+        model.writeParticles(startText);
+        constexpr int kSteps = 10;
+        for (int s = 0; s < kSteps; ++s) model.step();
+        model.setTimeDirection(-1);
+        QVERIFY(model.params() == params);
+        for (int s = 0; s < kSteps; ++s) model.step();
+        QCOMPARE(model.stepCount(), std::int64_t(2 * kSteps));
+        QVERIFY2(std::abs(model.time()) <= 1e-12 * kSteps * dtOf(model),
+                 qPrintable(QString::number(model.time())));
+        // The positions come back to a small fraction of the box (round-off grows with the steps).
+        const SceneView end = model.sceneView();
+        QCOMPARE(end.left, start.left);
+        QCOMPARE(end.right, start.right);
+        const Snapshot back = takeSnapshot(model);
+        auto fresh = instantiate(preset);
+        const Snapshot begin = takeSnapshot(*fresh);
+        // Particles are matched by id where the state has ids (a spatial sort reorders the arrays).
+        const auto indexById = [](const Snapshot& snapshot, std::size_t count) {
+            std::vector<std::size_t> index(count);
+            const auto id = snapshot.state.arrays.find("id");
+            for (std::size_t i = 0; i < count; ++i)
+                index[i] = id == snapshot.state.arrays.end() ? i : static_cast<std::size_t>(id->second[i]);
+            return index;
+        };
+        const std::size_t count = begin.state.arrays.at("x").size();
+        QCOMPARE(back.state.arrays.at("x").size(), count);
+        const std::vector<std::size_t> idBack = indexById(back, count), idBegin = indexById(begin, count);
+        const double tolerance = 1e-6 * (start.right - start.left);
+        for (const char* key : {"x", "y"}) {
+            std::vector<double> a(count), b(count);
+            for (std::size_t i = 0; i < count; ++i) {
+                QVERIFY(idBack[i] < count && idBegin[i] < count);
+                a[idBack[i]] = back.state.arrays.at(key)[i];
+                b[idBegin[i]] = begin.state.arrays.at(key)[i];
+            }
+            double worst = 0.0;
+            for (std::size_t i = 0; i < count; ++i) worst = std::max(worst, std::abs(a[i] - b[i]));
+            QVERIFY2(worst <= tolerance, qPrintable(QString("%1 off by %2").arg(key).arg(worst)));
+        }
+    }
+
+    // SceneTools, one rule for every kind that has tools.
+    void toolsClampIndexAndRest_data() {
+        kindsAndBackends();
+    }
+    void toolsClampIndexAndRest() {
+        PL_CONTRACT_MODEL(made);
+        SceneTools* tools = model.tools();
+        if (!tools) QSKIP("this kind has no mouse tools");
+        while (!tools->obstacles().empty()) tools->removeObstacle(0);
+        const Box box = boxOf(model);
+        const double radius = 0.01 * box.width();
+        // Added: clamped into the box.
+        tools->addObstacle(discAt(box.right + 1e6, box.bottom - 1e6, radius));
+        QCOMPARE(tools->obstacles().size(), std::size_t(1));
+        QCOMPARE(tools->obstacles()[0].x, box.right);
+        QCOMPARE(tools->obstacles()[0].y, box.bottom);
+        // Placed: clamped, and at rest at once.
+        tools->placeObstacle(0, box.left - 1e6, box.top + 1e6);
+        QCOMPARE(tools->obstacles()[0].x, box.left);
+        QCOMPARE(tools->obstacles()[0].y, box.top);
+        QCOMPARE(tools->obstacles()[0].vx, 0.0);
+        QCOMPARE(tools->obstacles()[0].vy, 0.0);
+        QVERIFY(!tools->bodiesMoving());
+        // Indices that name no obstacle: refused, nothing changed.
+        QVERIFY_THROWS_EXCEPTION(std::out_of_range, tools->removeObstacle(1));
+        QVERIFY_THROWS_EXCEPTION(std::out_of_range, tools->dragObstacle(1, box.left, box.bottom));
+        QVERIFY_THROWS_EXCEPTION(std::out_of_range, tools->releaseObstacle(1));
+        QVERIFY_THROWS_EXCEPTION(std::out_of_range, tools->placeObstacle(1, box.left, box.bottom));
+        QCOMPARE(tools->obstacles().size(), std::size_t(1));
+        // Dragged far outside: the body heads for the clamped corner at no more than the tool speed.
+        const double x0 = box.centreX(), y0 = box.centreY();
+        tools->placeObstacle(0, x0, y0);
+        tools->dragObstacle(0, box.right + 1e6, box.top + 2e6); // raw direction: slope ≈ 2
+        QVERIFY(tools->bodiesMoving());
+        model.step();
+        const Obstacle& o = tools->obstacles()[0];
+        const double dx = o.x - x0, dy = o.y - y0;
+        QVERIFY2(dx > 0 && dy > 0, qPrintable(QString("moved by (%1, %2)").arg(dx).arg(dy)));
+        const double cross = dx * (box.top - y0) - dy * (box.right - x0);
+        QVERIFY2(std::abs(cross) <= 1e-9 * std::hypot(dx, dy) * std::hypot(box.right - x0, box.top - y0),
+                 qPrintable(QString::number(cross)));
+        QVERIFY(std::hypot(dx, dy) <= tools->toolSpeed() * std::abs(dtOf(model)) * (1 + 1e-12));
+        tools->releaseObstacle(0);
+        tools->removeObstacle(0);
+        QVERIFY(tools->obstacles().empty());
+        // Heat / cool: only a positive, finite factor.
+        for (double factor :
+             {0.0, -1.0, std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()})
+            QVERIFY_THROWS_EXCEPTION(std::invalid_argument, tools->scaleKineticEnergy(factor));
+        // Without a piston, its tools are refused alike.
+        if (!tools->hasPiston()) {
+            QVERIFY_THROWS_EXCEPTION(std::logic_error, tools->dragPiston(0.0));
+            QVERIFY_THROWS_EXCEPTION(std::logic_error, tools->drivePiston(-1));
+            QVERIFY_THROWS_EXCEPTION(std::logic_error, tools->placePiston(0.0));
+        }
+    }
+};
+
+QTEST_APPLESS_MAIN(TestModelContract)
+#include "tst_model_contract.moc"
