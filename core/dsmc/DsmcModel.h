@@ -8,6 +8,7 @@
 #include "DsmcState.h"
 #include "common/Model.h"
 #include "common/ModelBase.h"
+#include "common/StateTable.h"
 
 namespace pl {
 
@@ -53,6 +54,8 @@ public:
     long long lastCollisions() const { return collisionsThisStep_; }
 
 private:
+    // The snapshot's plain fields (DsmcSnapshot.cpp).
+    static const StateTable<DsmcModel, DsmcState>& stateTable();
     void advance(double h) override; // one NTC collision step (no motion: the cell is homogeneous)
     // ModelBase's hooks: ν Δt bounds the parameters and presets (refused above kRefusedNuDt).
     void refuseParams(const DsmcParams& next) const override;

@@ -5,37 +5,38 @@
 
 namespace pl {
 
+const StateTable<DsmcModel, DsmcState>& DsmcModel::stateTable() {
+    static const StateTable<DsmcModel, DsmcState> table = [] {
+        StateTable<DsmcModel, DsmcState> t;
+        t.scalar("sigma_cr_max", &DsmcModel::sigmaCrMax_)
+            .scalar("remainder", &DsmcModel::remainder_)
+            .scalar("candidates", &DsmcModel::candidates_)
+            .scalar("collisions_this_step", &DsmcModel::collisionsThisStep_)
+            .scalar("collisions_total", &DsmcModel::collisionsTotal_);
+        t.perParticle("vx", &DsmcState::vx)
+            .perParticle("vy", &DsmcState::vy)
+            .perParticle("vz", &DsmcState::vz)
+            .perParticle("origin", &DsmcState::origin);
+        return t;
+    }();
+    return table;
+}
+
 StateRecord DsmcModel::saveState() const {
     StateRecord r;
     saveClock(r);
-    r.put("sigma_cr_max", sigmaCrMax_);
-    r.put("remainder", remainder_);
-    r.put("candidates", static_cast<double>(candidates_));
-    r.put("collisions_this_step", static_cast<double>(collisionsThisStep_));
-    r.put("collisions_total", static_cast<double>(collisionsTotal_));
-    r.put("vx", state_.vx);
-    r.put("vy", state_.vy);
-    r.put("vz", state_.vz);
-    r.put("origin", state_.origin);
+    stateTable().save(*this, state_, r);
     return r;
 }
 
 void DsmcModel::restoreState(const StateRecord& r) {
-    DsmcState s;
-    s.vx = r.array<double>("vx");
-    const std::size_t n = s.vx.size();
+    const std::size_t n = stateTable().particlesIn(r);
     if (n != state_.size())
         throw PresetError("state.vx", "the snapshot holds " + std::to_string(n) + " particles, its preset " +
                                           std::to_string(state_.size()));
-    s.vy = r.array<double>("vy", n);
-    s.vz = r.array<double>("vz", n);
-    s.origin = r.array<std::uint8_t>("origin", n);
+    DsmcState s = stateTable().read(*this, r, n);
     restoreClock(r);
-    sigmaCrMax_ = r.scalar("sigma_cr_max");
-    remainder_ = r.scalar("remainder");
-    candidates_ = static_cast<long long>(r.scalar("candidates"));
-    collisionsThisStep_ = static_cast<long long>(r.scalar("collisions_this_step"));
-    collisionsTotal_ = static_cast<long long>(r.scalar("collisions_total"));
+    stateTable().restore(*this, r);
     state_ = std::move(s);
 }
 

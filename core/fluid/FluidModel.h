@@ -11,6 +11,7 @@
 #include "common/KinematicDrive.h"
 #include "common/Model.h"
 #include "common/ModelBase.h"
+#include "common/StateTable.h"
 
 namespace pl {
 
@@ -112,6 +113,8 @@ protected:
 
     mutable std::vector<double> errorMean_, errorMax_; // before iteration k of the last step
     long long drained_ = 0;
+    // The snapshot's plain fields (FluidSnapshot.cpp).
+    static const StateTable<FluidModel, FluidState>& stateTable();
 };
 
 } // namespace pl

@@ -4,36 +4,38 @@
 
 namespace pl {
 
+const StateTable<FluidModel, FluidState>& FluidModel::stateTable() {
+    static const StateTable<FluidModel, FluidState> table = [] {
+        StateTable<FluidModel, FluidState> t;
+        t.scalar("drained", &FluidModel::drained_)
+            .array("error_mean", &FluidModel::errorMean_)
+            .array("error_max", &FluidModel::errorMax_);
+        t.perParticle("x", &FluidState::x)
+            .perParticle("y", &FluidState::y)
+            .perParticle("vx", &FluidState::vx)
+            .perParticle("vy", &FluidState::vy);
+        return t;
+    }();
+    return table;
+}
+
 StateRecord FluidModel::saveState() const {
     pullState();
     StateRecord r;
     saveClock(r);
-    r.put("drained", static_cast<double>(drained_));
-    r.put("x", state_.x);
-    r.put("y", state_.y);
-    r.put("vx", state_.vx);
-    r.put("vy", state_.vy);
-    r.put("error_mean", errorMean_);
-    r.put("error_max", errorMax_);
+    stateTable().save(*this, state_, r);
     return r;
 }
 
 void FluidModel::restoreState(const StateRecord& r) {
-    FluidState s;
-    s.x = r.array<double>("x");
-    const std::size_t n = s.x.size();
+    const std::size_t n = stateTable().particlesIn(r);
     if (static_cast<long long>(n) > params_.maxParticles)
         throw PresetError("state.x", "the snapshot holds " + std::to_string(n) +
                                          " particles, more than its max_particles");
-    s.y = r.array<double>("y", n);
-    s.vx = r.array<double>("vx", n);
-    s.vy = r.array<double>("vy", n);
-    std::vector<double> errorMean = r.array<double>("error_mean"), errorMax = r.array<double>("error_max");
+    FluidState s = stateTable().read(*this, r, n);
     restoreClock(r);
-    drained_ = static_cast<long long>(r.scalar("drained"));
+    stateTable().restore(*this, r);
     state_ = std::move(s);
-    errorMean_ = std::move(errorMean);
-    errorMax_ = std::move(errorMax);
     obstacleDrive_.clear();
     stateEdited();
 }

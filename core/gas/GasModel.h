@@ -11,6 +11,7 @@
 #include "common/ModelBase.h"
 #include "common/NeighbourList.h"
 #include "common/Obstacle.h"
+#include "common/StateTable.h"
 
 #include <array>
 #include <deque>
@@ -187,6 +188,9 @@ protected:
     void reportEscape() { escaped_ = true; }
 
 private:
+    // The snapshot's plain fields (GasSnapshot.cpp).
+    static const StateTable<GasModel, GasState>& stateTable();
+
     GasIntegrator integrator_ = GasIntegrator::VelocityVerlet;
 
     // Caches of what the positions imply; mutable: a GPU twin's lazy download (a const pullState())

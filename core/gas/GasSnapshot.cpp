@@ -1,38 +1,48 @@
-// The gas's dynamic state for snapshots: every particle array, the clocks and counters, the wall window,
-// and the neighbour list as it stands (a permuted list sums forces in another order than a fresh one,
-// and the last bit of a force decides a chaotic trajectory).
+// The gas's dynamic state for snapshots: every particle array, the clocks and counters (stateTable()),
+// the wall window, and the neighbour list as it stands (a permuted list sums forces in another order than a
+// fresh one, and the last bit of a force decides a chaotic trajectory).
 #include "GasModel.h"
 
 #include <algorithm>
 
 namespace pl {
 
+// The plain fields: numbers of the model and one array entry per disk.
+const StateTable<GasModel, GasState>& GasModel::stateTable() {
+    static const StateTable<GasModel, GasState> table = [] {
+        StateTable<GasModel, GasState> t;
+        t.scalar("next_id", &GasModel::nextId_)
+            .scalar("spawn_events", &GasModel::spawnEvents_)
+            .scalar("last_sort_step", &GasModel::lastSortStep_)
+            .scalar("last_sample_time", &GasModel::lastSampleTime_)
+            .scalar("energy_baseline", &GasModel::energyBaseline_)
+            .scalar("reference_energy", &GasModel::referenceEnergy_)
+            .scalar("piston_velocity", &GasModel::pistonVelocity_)
+            .scalar("max_displacement2", &GasModel::maxDisplacement2_)
+            .scalar("forces_valid", &GasModel::forcesValid_)
+            .scalar("energies_valid", &GasModel::energiesValid_);
+        t.perParticle("x", &GasState::x)
+            .perParticle("y", &GasState::y)
+            .perParticle("vx", &GasState::vx)
+            .perParticle("vy", &GasState::vy)
+            .perParticle("ax", &GasState::ax)
+            .perParticle("ay", &GasState::ay)
+            .perParticle("species", &GasState::species)
+            .perParticle("id", &GasState::id)
+            .perParticle("potential", &GasState::potential)
+            .perParticle("virial", &GasState::virial)
+            .perParticle("wall_impulse", &GasState::wallImpulse)
+            .perParticle("contacts_begun", &GasState::contactsBegun);
+        return t;
+    }();
+    return table;
+}
+
 StateRecord GasModel::saveState() const {
     pullState();
     StateRecord r;
     saveClock(r);
-    r.put("next_id", nextId_);
-    r.put("spawn_events", static_cast<double>(spawnEvents_));
-    r.put("last_sort_step", static_cast<double>(lastSortStep_));
-    r.put("last_sample_time", lastSampleTime_);
-    r.put("energy_baseline", energyBaseline_);
-    r.put("reference_energy", referenceEnergy_);
-    r.put("piston_velocity", pistonVelocity_);
-    r.put("max_displacement2", maxDisplacement2_);
-    r.put("forces_valid", forcesValid_ ? 1.0 : 0.0);
-    r.put("energies_valid", energiesValid_ ? 1.0 : 0.0);
-    r.put("x", state_.x);
-    r.put("y", state_.y);
-    r.put("vx", state_.vx);
-    r.put("vy", state_.vy);
-    r.put("ax", state_.ax);
-    r.put("ay", state_.ay);
-    r.put("species", state_.species);
-    r.put("id", state_.id);
-    r.put("potential", state_.potential);
-    r.put("virial", state_.virial);
-    r.put("wall_impulse", state_.wallImpulse);
-    r.put("contacts_begun", state_.contactsBegun);
+    stateTable().save(*this, state_, r);
     std::vector<double> window;
     for (const WallSample& w : wallWindow_)
         window.insert(window.end(), {w.impulse, w.duration, w.perimeterTime});
@@ -50,19 +60,7 @@ StateRecord GasModel::saveState() const {
 
 void GasModel::restoreState(const StateRecord& r) {
     const auto n = static_cast<std::size_t>(params_.totalCount());
-    GasState s;
-    s.x = r.array<double>("x", n);
-    s.y = r.array<double>("y", n);
-    s.vx = r.array<double>("vx", n);
-    s.vy = r.array<double>("vy", n);
-    s.ax = r.array<double>("ax", n);
-    s.ay = r.array<double>("ay", n);
-    s.species = r.array<std::uint8_t>("species", n);
-    s.id = r.array<std::uint32_t>("id", n);
-    s.potential = r.array<double>("potential", n);
-    s.virial = r.array<double>("virial", n);
-    s.wallImpulse = r.array<double>("wall_impulse", n);
-    s.contactsBegun = r.array<std::uint32_t>("contacts_begun", n);
+    GasState s = stateTable().read(*this, r, n);
     const auto counted = [&](int species) {
         return static_cast<long long>(std::count(s.species.begin(), s.species.end(), species));
     };
@@ -89,16 +87,7 @@ void GasModel::restoreState(const StateRecord& r) {
     if (window.size() % 3 != 0) throw PresetError("state.wall_window", "state.wall_window must hold triples");
 
     restoreClock(r);
-    nextId_ = static_cast<std::uint32_t>(r.scalar("next_id"));
-    spawnEvents_ = static_cast<std::uint64_t>(r.scalar("spawn_events"));
-    lastSortStep_ = static_cast<std::int64_t>(r.scalar("last_sort_step"));
-    lastSampleTime_ = r.scalar("last_sample_time");
-    energyBaseline_ = r.scalar("energy_baseline");
-    referenceEnergy_ = r.scalar("reference_energy");
-    pistonVelocity_ = r.scalar("piston_velocity");
-    maxDisplacement2_ = r.scalar("max_displacement2");
-    forcesValid_ = r.scalar("forces_valid") != 0.0;
-    energiesValid_ = r.scalar("energies_valid") != 0.0;
+    stateTable().restore(*this, r);
     state_ = std::move(s);
     neighbours_.restore(std::move(list));
     wallWindow_.clear();

@@ -11,6 +11,7 @@
 #include "common/Model.h"
 #include "common/ModelBase.h"
 #include "common/Philox.h"
+#include "common/StateTable.h"
 #include "dsmc/DsmcCollisionModel.h"
 
 #include <cstdint>
@@ -205,6 +206,10 @@ protected:
     std::int64_t sampleFrom_ = 0;              // first step of the window
     mutable long long collisionsThisStep_ = 0; // a GPU twin's hand-over sets it, as the sampler
     std::uint64_t streamCounter_ = 0;          // Philox counter of the model's random stream
+
+private:
+    // The snapshot's plain fields (TunnelSnapshot.cpp).
+    static const StateTable<TunnelModel, TunnelState>& stateTable();
 };
 
 } // namespace pl

@@ -1,10 +1,14 @@
 // Snapshots beyond the contract every kind keeps (tst_model_contract): the gas continues bit for bit
 // across its spatial sorts and neighbour-list rebuilds, and with thermal walls drawing random numbers;
-// broken snapshots are refused naming the entry.
+// snapshots written before the state tables (tests/data/snapshots, one per kind) load and continue
+// exactly as the build that wrote them continued; broken snapshots are refused naming the entry.
 #include "catalog/ModelCatalog.h"
 #include "common/Snapshot.h"
 
 #include <QtTest>
+#include <filesystem>
+#include <fstream>
+#include <set>
 #include <sstream>
 
 using namespace pl;
@@ -59,6 +63,35 @@ private slots:
         p.params["wall_kT"] = 1.0;
         p.obstacles.push_back({Obstacle::Shape::Disc, 0.3, 0.2, 0.1});
         checkContinuation(p, 120, 150);
+    }
+
+    // Each file was written by `particlelab-cli run PRESET --steps N --snapshot KIND….snapshot.json` of
+    // the build before the state tables, and its continuation by `particlelab-cli run
+    // KIND….snapshot.json --steps 30 --dump-final KIND….after30.csv` of the same build
+    // (tests/data/snapshots/README.md). Every kind has one.
+    void earlierSnapshotsContinueAsTheyDid() {
+        const std::filesystem::path folder = std::filesystem::path(PARTICLELAB_TEST_DATA) / "snapshots";
+        std::set<std::string> kinds;
+        for (const auto& entry : std::filesystem::directory_iterator(folder)) {
+            const std::string file = entry.path().filename().string();
+            const std::string suffix = ".snapshot.json";
+            if (file.size() <= suffix.size() ||
+                file.compare(file.size() - suffix.size(), suffix.size(), suffix) != 0)
+                continue;
+            const std::string stem = file.substr(0, file.size() - suffix.size());
+            const Snapshot snapshot = readSnapshotFile(entry.path().string(), specsForModel);
+            kinds.insert(snapshot.preset.model);
+            auto model = instantiate(snapshot);
+            for (int s = 0; s < 30; ++s) model->step();
+            QVERIFY2(!model->failure(), stem.c_str());
+            std::ifstream expected(folder / (stem + ".after30.csv"));
+            QVERIFY2(expected, stem.c_str());
+            std::stringstream text;
+            text << expected.rdbuf();
+            QVERIFY2(particles(*model) == text.str(), (stem + ": the continuation differs").c_str());
+        }
+        for (const ModelDescriptor& d : modelCatalog())
+            QVERIFY2(kinds.count(d.kind) == 1, ("no earlier snapshot of kind " + d.kind).c_str());
     }
 
     void brokenSnapshotsAreRefusedNamingTheEntry() {
