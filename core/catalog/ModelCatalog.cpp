@@ -6,6 +6,7 @@
 #include "common/PresetMigration.h"
 
 #include <filesystem>
+#include <stdexcept>
 
 namespace pl {
 
@@ -15,14 +16,29 @@ const ModelDescriptor& dsmcRegistration();   // dsmc/DsmcRegistration.cpp
 const ModelDescriptor& fluidRegistration();  // fluid/FluidRegistration.cpp
 const ModelDescriptor& tunnelRegistration(); // tunnel/TunnelRegistration.cpp
 
-const std::vector<std::reference_wrapper<const ModelDescriptor>>& modelCatalog() {
-    static const std::vector<std::reference_wrapper<const ModelDescriptor>> list{
+namespace {
+std::vector<std::reference_wrapper<const ModelDescriptor>>& registeredKinds() {
+    static std::vector<std::reference_wrapper<const ModelDescriptor>> list{
         gasRegistration(),
         dsmcRegistration(),
         fluidRegistration(),
         tunnelRegistration(),
     };
     return list;
+}
+} // namespace
+
+const std::vector<std::reference_wrapper<const ModelDescriptor>>& modelCatalog() {
+    return registeredKinds();
+}
+
+void registerModel(const ModelDescriptor& descriptor) {
+    if (descriptor.kind.empty() || !descriptor.specs || !descriptor.create || !descriptor.particleCount)
+        throw std::invalid_argument(
+            "a model kind needs a name, parameter specs, a creator and a particle count");
+    if (findModel(descriptor.kind))
+        throw std::invalid_argument("the model kind '" + descriptor.kind + "' is registered already");
+    registeredKinds().push_back(descriptor);
 }
 
 namespace {

@@ -16,6 +16,11 @@ namespace pl {
 
 // Every registered kind, in menu order.
 const std::vector<std::reference_wrapper<const ModelDescriptor>>& modelCatalog();
+// Adds a kind from outside this library after the built-in ones (the test tree's ballistic kind, which
+// shows that a kind made by docs/architecture.md's checklist passes the catalog's contract), before
+// anything reads the catalog on another thread. Throws std::invalid_argument for an incomplete
+// descriptor or a kind already registered. The descriptor must outlive the catalog.
+void registerModel(const ModelDescriptor& descriptor);
 // The kind's descriptor, or nullptr for an unknown kind.
 const ModelDescriptor* findModel(const std::string& kind);
 const std::vector<ParamSpec>* specsForModel(const std::string& kind);

@@ -1,13 +1,15 @@
 // The model contract, checked for every registered kind on every backend it has (a row per kind and
-// backend, built from the catalog: a new kind is covered without editing this file). The base owns the
-// step and the clock; a snapshot continues bit for bit on the CPU reference; a refused preset leaves the
-// model as it was; the direction of time is refused where the dynamics cannot reverse and undoes the run
+// backend, built from the catalog: a new kind is covered without editing this file), and for the test
+// tree's own ballistic kind (contract/BallisticKind.h), built by docs/architecture.md's checklist. The base
+// owns the step and the clock; a snapshot continues bit for bit on the CPU reference; a refused preset leaves
+// the model as it was; the direction of time is refused where the dynamics cannot reverse and undoes the run
 // where they can; and a kind with mouse tools keeps the SceneTools rules:
 // centres and drag targets clamped into the box, indices checked, a placed body at rest, the piston's
 // tools refused without a piston, heat / cool refusing a factor that is not positive.
 #include "BackendRows.h"
 #include "catalog/ModelCatalog.h"
 #include "common/Snapshot.h"
+#include "contract/BallisticKind.h"
 #include "gl/GpuModels.h"
 
 #include <QtTest>
@@ -91,8 +93,18 @@ class TestModelContract : public QObject {
     Model& model = *made.model
 
 private slots:
+    // The test tree's own kind joins the catalog first, so every check below runs on it too.
+    void initTestCase() {
+        registerModel(test::ballisticRegistration());
+        QVERIFY_THROWS_EXCEPTION(std::invalid_argument, registerModel(test::ballisticRegistration()));
+        ModelDescriptor incomplete; // no specs, creator or particle count
+        incomplete.kind = "incomplete";
+        QVERIFY_THROWS_EXCEPTION(std::invalid_argument, registerModel(incomplete));
+    }
+
     void everyKindHasARow() {
-        QVERIFY(modelCatalog().size() >= 4);
+        QVERIFY(modelCatalog().size() >= 5);
+        QVERIFY(findModel("ballistic") != nullptr);
         for (const ModelDescriptor& d : modelCatalog())
             QVERIFY2(d.create && d.specs && d.particleCount, d.kind.c_str());
     }
