@@ -1,11 +1,15 @@
 // StateRecord look-ups that name what is missing.
 #include "StateRecord.h"
 
+#include <cmath>
+
 namespace pl {
 
 double StateRecord::scalar(const std::string& key) const {
     const auto it = scalars.find(key);
     if (it == scalars.end()) throw PresetError("state." + key, "the snapshot has no state." + key);
+    if (!std::isfinite(it->second))
+        throw PresetError("state." + key, "state." + key + " is not a finite number");
     return it->second;
 }
 

@@ -7,8 +7,10 @@
 
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <map>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace pl {
@@ -22,18 +24,26 @@ struct StateRecord {
     }
     void put(const std::string& key, double value) { scalars[key] = value; }
 
-    // The scalar named key; throws PresetError ("state.key") when it is missing.
+    // The scalar named key; throws PresetError ("state.key") when it is missing or not finite (a null in
+    // the file reads as NaN: no state of a running model holds one).
     double scalar(const std::string& key) const;
     // The array named key as T, with `size` entries (any size when size is SIZE_MAX); throws PresetError
-    // when it is missing, has another length, or holds a value T cannot represent exactly.
+    // when it is missing, has another length, or holds a value that is not finite or that T cannot
+    // represent exactly.
     template <class T> std::vector<T> array(const std::string& key, std::size_t size = SIZE_MAX) const {
         const std::vector<double>& values = rawArray(key, size);
         std::vector<T> out(values.size());
         for (std::size_t i = 0; i < values.size(); ++i) {
+            const auto refuse = [&](const char* why) {
+                throw PresetError("state." + key, "state." + key + "[" + std::to_string(i) + "] " + why);
+            };
+            if (!std::isfinite(values[i])) refuse("is not a finite number");
+            if constexpr (std::is_integral_v<T>) // a cast from outside T's range is undefined
+                if (!(values[i] >= static_cast<double>(std::numeric_limits<T>::lowest()) &&
+                      values[i] < static_cast<double>(std::numeric_limits<T>::max()) + 1.0))
+                    refuse("is out of range for this field");
             out[i] = static_cast<T>(values[i]);
-            if (static_cast<double>(out[i]) != values[i] && !(std::isnan(values[i])))
-                throw PresetError("state." + key, "state." + key + "[" + std::to_string(i) +
-                                                      "] is not a valid value for this field");
+            if (static_cast<double>(out[i]) != values[i]) refuse("is not a valid value for this field");
         }
         return out;
     }

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <stdexcept>
 
 namespace pl::scaleout {
 
@@ -35,6 +36,10 @@ ImportedCell importSpartaRun(const std::string& dir) {
     cell.reset(preset);
     const std::vector<double> origin = cell.saveState().arrays.at("origin"); // by particle, as exported
     run.series = TimeSeries(cell.seriesColumns());
+    const std::vector<std::string> columns = cell.seriesColumns();
+    const auto sigmaColumn =
+        static_cast<std::size_t>(std::find(columns.begin(), columns.end(), "sigma_cr_max") - columns.begin());
+    if (sigmaColumn == columns.size()) throw std::logic_error("the cell's series has no sigma_cr_max column");
 
     std::ifstream log = openRunFile(dir, kSpartaLog);
     const ThermoTable stats = readThermo(log);
@@ -69,7 +74,7 @@ ImportedCell importSpartaRun(const std::string& dir) {
         StateRecord state;
         state.put("step", static_cast<double>(frame.step));
         state.put("time", value(row->second, "Time"));
-        state.put("sigma_cr_max", std::numeric_limits<double>::quiet_NaN());
+        state.put("sigma_cr_max", 0.0); // not known: the series reads NaN (below); a state holds numbers
         state.put("remainder", 0.0);
         state.put("candidates", value(row->second, "Natt"));
         state.put("collisions_this_step", value(row->second, "Ncoll"));
@@ -87,7 +92,9 @@ ImportedCell importSpartaRun(const std::string& dir) {
         state.put("vz", z);
         state.put("origin", origin);
         cell.restoreState(state);
-        run.series.append(cell.sampleSeries());
+        std::vector<double> sample = cell.sampleSeries();
+        sample[sigmaColumn] = std::numeric_limits<double>::quiet_NaN();
+        run.series.append(sample);
         ++run.frames;
     }
     if (run.frames == 0) throw ImportError(dir + ": no dumped step matches a stats row");

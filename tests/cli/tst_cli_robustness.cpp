@@ -121,6 +121,29 @@ private slots:
         QVERIFY(r.out.contains("--threads"));
     }
 
+    // A snapshot that is valid JSON but holds a null velocity or time used to run on with NaN rows.
+    void snapshotWithANullIsRefused() {
+        QTemporaryDir dir;
+        const QString good = dir.filePath("good.json");
+        QCOMPARE(runCli({"run", "gas-classroom", "--steps", "5", "--quiet", "--snapshot", good}).exitCode, 0);
+        QFile in(good);
+        QVERIFY(in.open(QIODevice::ReadOnly));
+        const QByteArray text = in.readAll();
+        const auto refusedWith = [&](const QRegularExpression& field, const QString& entry) {
+            QByteArray broken = QString::fromUtf8(text).replace(field, "\\1null").toUtf8();
+            QVERIFY2(broken != text, qPrintable(field.pattern()));
+            const QString path = dir.filePath("broken.json");
+            writeFile(path, broken);
+            const QString series = dir.filePath("s.csv");
+            const auto r = runCli({"run", path, "--steps", "5", "--quiet", "--out", series});
+            QCOMPARE(r.exitCode, 2);
+            QVERIFY2(r.err.contains(entry) && r.err.contains("not a finite number"), qPrintable(r.err));
+            QVERIFY(!QFile::exists(series));
+        };
+        refusedWith(QRegularExpression(R"(("vx":\s*\[\s*)[-0-9.eE+]+)"), "state.vx");
+        refusedWith(QRegularExpression(R"(("time":\s*)[-0-9.eE+]+)"), "state.time");
+    }
+
     void blowUpAtTheLastStepIsNotExit0() {
         const auto r = runCli({"run", "gas-classroom", "--steps", "63", "--set", "dt=0.002", "--set",
                                "stiffness=1e6", "--quiet"});

@@ -3,9 +3,9 @@
 // tree's own ballistic kind (contract/BallisticKind.h), built by docs/architecture.md's checklist. The base
 // owns the step and the clock; a snapshot continues bit for bit on the CPU reference; a refused preset leaves
 // the model as it was; the direction of time is refused where the dynamics cannot reverse and undoes the run
-// where they can; and a kind with mouse tools keeps the SceneTools rules:
-// centres and drag targets clamped into the box, indices checked, a placed body at rest, the piston's
-// tools refused without a piston, heat / cool refusing a factor that is not positive.
+// where they can; a non-finite number in a snapshot is refused; and a kind with mouse tools keeps the
+// SceneTools rules: centres and drag targets clamped into the box, indices checked, a placed body at rest,
+// the piston's tools refused without a piston, heat / cool refusing a factor that is not positive.
 #include "BackendRows.h"
 #include "catalog/ModelCatalog.h"
 #include "common/Snapshot.h"
@@ -164,6 +164,40 @@ private slots:
                                     .arg(QString::fromStdString(model.seriesColumns()[k]))
                                     .arg(a[k], 0, 'g', 17)
                                     .arg(b[k], 0, 'g', 17)));
+    }
+
+    // A snapshot whose state holds a non-finite number (a null in the file) is refused naming the
+    // field, and the model stays as it was: no kind runs on from a NaN.
+    void nonFiniteStateIsRefused_data() {
+        kindsAndBackends();
+    }
+    void nonFiniteStateIsRefused() {
+        PL_CONTRACT_MODEL(made);
+        for (int s = 0; s < 3; ++s) model.step();
+        const Snapshot good = takeSnapshot(model);
+        const std::string before = particles(model);
+        const auto refusedKey = [&](const StateRecord& state) -> std::string {
+            try {
+                model.restoreState(state);
+            } catch (const PresetError& e) {
+                return e.key();
+            }
+            return "accepted";
+        };
+        int corrupted = 0;
+        for (const auto& [key, values] : good.state.arrays) {
+            if (values.size() != model.particleCount() || values.empty()) continue;
+            StateRecord bad = good.state;
+            bad.arrays[key][0] = std::numeric_limits<double>::quiet_NaN();
+            QCOMPARE(refusedKey(bad), "state." + key);
+            QCOMPARE(particles(model), before);
+            ++corrupted;
+        }
+        QVERIFY2(corrupted > 0, "the state has no per-particle array");
+        StateRecord badTime = good.state;
+        badTime.scalars["time"] = std::numeric_limits<double>::infinity();
+        QCOMPARE(refusedKey(badTime), std::string("state.time"));
+        QCOMPARE(particles(model), before);
     }
 
     // A preset refused by reset(preset) leaves the parameters, the seed and the particles as they were.
