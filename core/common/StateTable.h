@@ -7,10 +7,13 @@
 
 #include "StateRecord.h"
 
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <type_traits>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -59,7 +62,21 @@ public:
     // written: throws PresetError naming the field, and then the model is as it was. Returns the
     // particle state, with count entries in each per-particle array (the model moves it into place).
     State read(const Model& model, const StateRecord& record, std::size_t count) const {
-        for (const Scalar& s : scalars_) record.scalar(s.key);
+        for (const Scalar& s : scalars_)
+            std::visit(
+                [&](auto member) {
+                    using T = std::remove_reference_t<decltype(std::declval<Model&>().*member)>;
+                    const double value = record.scalar(s.key); // throws unless present and finite
+                    if constexpr (std::is_integral_v<T> && !std::is_same_v<T, bool>)
+                        if (!(value >= static_cast<double>(std::numeric_limits<T>::lowest()) &&
+                              value < static_cast<double>(std::numeric_limits<T>::max()) + 1.0) ||
+                            value != std::floor(value))
+                            throw PresetError("state." + s.key,
+                                              "state." + s.key + " must be a whole number from " +
+                                                  std::to_string(std::numeric_limits<T>::lowest()) + " to " +
+                                                  std::to_string(std::numeric_limits<T>::max()));
+                },
+                s.member);
         for (const Array& a : arrays_) record.array<double>(a.key, a.length ? a.length(model) : SIZE_MAX);
         State state;
         for (const Particles& p : particles_)

@@ -115,6 +115,11 @@ private slots:
         Snapshot badSpecies = good;
         badSpecies.state.arrays["species"][0] = 0.5;
         QCOMPARE(refusal(badSpecies), std::string("state.species"));
+        for (double notACount : {-1.0, 0.5, 1e300}) { // next_id is a 32-bit count
+            Snapshot badCounter = good;
+            badCounter.state.scalars["next_id"] = notACount;
+            QCOMPARE(refusal(badCounter), std::string("state.next_id"));
+        }
         QVERIFY_THROWS_EXCEPTION(PresetError, parseSnapshot("{\"snapshot_schema\": 7}", specsForModel, "x"));
         QVERIFY_THROWS_EXCEPTION(PresetError, parseSnapshot("{\"schema\": 1}", specsForModel, "x"));
         QVERIFY(isSnapshotJson(serializeSnapshot(good, model->paramSpecs())));
