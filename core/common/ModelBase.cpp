@@ -20,7 +20,7 @@ void requireObstacleIndex(std::size_t index, std::size_t count) {
 void requireCentresInside(const Area& area, const std::vector<Obstacle>& obstacles) {
     for (std::size_t i = 0; i < obstacles.size(); ++i) {
         const Obstacle& o = obstacles[i];
-        if (o.x < area.left || o.x > area.right || o.y < area.bottom || o.y > area.top)
+        if (!(o.x >= area.left && o.x <= area.right && o.y >= area.bottom && o.y <= area.top))
             throw PresetError("obstacles[" + std::to_string(i) + "]",
                               "obstacles[" + std::to_string(i) + "] has its centre outside the box");
     }

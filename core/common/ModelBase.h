@@ -249,6 +249,11 @@ protected:
 
     // Where obstacle centres and drag targets may be for these parameters.
     virtual Area areaOf(const Params& params) const = 0;
+    // A preset's obstacles have their centres where the tools may put them (PresetError naming the
+    // entry otherwise); a scene with more rules (the tunnel's body sizes) overrides this.
+    void checkObstacles(const Params& next, const std::vector<Obstacle>& obstacles) const override {
+        model_base::requireCentresInside(areaOf(next), obstacles);
+    }
     Area toolArea() const { return areaOf(this->params_); }
     // After an obstacle was added, removed or placed by hand (the state is pulled).
     virtual void bodiesEdited(BodyEdit /*edit*/) {}

@@ -115,10 +115,6 @@ protected:
     void afterStep() override;       // the health checks
     void paramsChanged(const GasParams& before) override;
     Area areaOf(const GasParams& p) const override { return {p.left(), p.bottom(), p.right(), p.top()}; }
-    // A preset's obstacles have their centres in the box (SceneModelBase leaves presets unchecked).
-    void checkObstacles(const GasParams& next, const std::vector<Obstacle>& obstacles) const override {
-        model_base::requireCentresInside(areaOf(next), obstacles);
-    }
     void bodiesEdited(BodyEdit edit) override;
     void energyEdited() override { rebaseEnergy(); } // a deliberate change of energy is not drift
     bool pistonMoving() const override { return pistonDrive_.moving(); }

@@ -3,9 +3,10 @@
 // tree's own ballistic kind (contract/BallisticKind.h), built by docs/architecture.md's checklist. The base
 // owns the step and the clock; a snapshot continues bit for bit on the CPU reference; a refused preset leaves
 // the model as it was; the direction of time is refused where the dynamics cannot reverse and undoes the run
-// where they can; a non-finite number in a snapshot is refused; and a kind with mouse tools keeps the
-// SceneTools rules: centres and drag targets clamped into the box, indices checked, a placed body at rest,
-// the piston's tools refused without a piston, heat / cool refusing a factor that is not positive.
+// where they can; a non-finite number in a snapshot and an obstacle outside the scene are refused; and a kind
+// with mouse tools keeps the SceneTools rules: centres and drag targets clamped into the box, indices
+// checked, a placed body at rest, the piston's tools refused without a piston, heat / cool refusing a factor
+// that is not positive.
 #include "BackendRows.h"
 #include "catalog/ModelCatalog.h"
 #include "common/Snapshot.h"
@@ -218,6 +219,29 @@ private slots:
         other.model = "no-such-kind";
         QVERIFY_THROWS_EXCEPTION(PresetError, model.reset(other));
         QVERIFY(model.params() == before);
+    }
+
+    // A preset whose obstacle lies far outside the scene is refused naming the entry (a kind without
+    // obstacles refuses any), and the model stays as it was.
+    void obstacleOutsideIsRefused_data() {
+        kindsAndBackends();
+    }
+    void obstacleOutsideIsRefused() {
+        PL_CONTRACT_MODEL(made);
+        const Box box = boxOf(model);
+        Preset outside = preset;
+        outside.obstacles.push_back(discAt(box.right + 10 * box.width(), box.centreY(), 0.01 * box.width()));
+        const ParamValues before = model.params();
+        const std::string particlesBefore = particles(model);
+        try {
+            model.reset(outside);
+            QFAIL("a preset with an obstacle outside the scene was accepted");
+        } catch (const PresetError& e) {
+            QVERIFY2(e.key().rfind("obstacles", 0) == 0, e.key().c_str());
+        }
+        QVERIFY(model.params() == before);
+        QCOMPARE(particles(model), particlesBefore);
+        QCOMPARE(model.toPreset().obstacles.size(), preset.obstacles.size());
     }
 
     // Only reversible dynamics accept −1; there, as many steps back return to the start (time exactly,
