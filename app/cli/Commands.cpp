@@ -141,7 +141,8 @@ std::string histogramsCsv(const Model& model) {
 int listPresets() {
     for (const auto& p : builtinPresets()) {
         std::string summary = p.preset.description.substr(0, p.preset.description.find(". "));
-        std::cout << p.name << "\t" << p.preset.model << "\t" << summary << "\n";
+        const ModelDescriptor& model = *findModel(p.preset.model); // a built-in preset's kind is registered
+        std::cout << p.name << "\t" << p.preset.model << "\t" << summary << "\t" << model.units.name << "\n";
     }
     return kOk;
 }
@@ -150,6 +151,17 @@ std::string sceneKinds() {
     std::string kinds;
     for (const ModelDescriptor& model : modelCatalog()) kinds += (kinds.empty() ? "" : ", ") + model.kind;
     return kinds;
+}
+
+std::string sceneUnits() {
+    std::size_t width = 0;
+    for (const ModelDescriptor& model : modelCatalog()) width = std::max(width, model.kind.size());
+    constexpr std::size_t kGap = 2; // between the kind and its units, so the unit systems line up
+    std::string text = "Units, per scene (of --set values and of the columns):\n";
+    for (const ModelDescriptor& model : modelCatalog())
+        text += "  " + model.kind + std::string(width - model.kind.size() + kGap, ' ') + model.units.name +
+                ": " + model.units.summary + "\n";
+    return text;
 }
 
 int listColumns(const std::string& sceneOrPreset) {

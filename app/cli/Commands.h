@@ -68,9 +68,13 @@ void applySets(Preset& preset, const std::vector<std::string>& sets);
 // The model's histograms as CSV: histogram,bin_lo,bin_hi,count,density,theory_density.
 std::string histogramsCsv(const Model& model);
 
+// One line per built-in preset: name<TAB>kind<TAB>first sentence of its description<TAB>its kind's units.
 int listPresets();
 // The registered scene kinds, comma-separated ("gas, dsmc, fluid").
 std::string sceneKinds();
+// The unit system each kind declares, a line per kind ("  gas     reduced (L, T, M): length L, …"), under
+// a heading: the footer of the help of the commands that take parameters or print columns.
+std::string sceneUnits();
 // The series columns of a scene kind, or of a preset's kind, one "name<TAB>unit<TAB>label" line each.
 int listColumns(const std::string& sceneOrPreset);
 int runSimulation(const RunOptions& options);

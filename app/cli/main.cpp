@@ -27,16 +27,19 @@ int main(int argc, char** argv) {
     app.add_subcommand("list", "List the built-in presets with a one-line description");
 
     std::string columnsScene;
-    app.add_subcommand("columns", "List a scene's series columns, the CSV header of run: name, unit, label")
-        ->add_option("scene", columnsScene, "A scene kind (" + sceneKinds() + ") or a preset")
+    auto* columnsCmd = app.add_subcommand(
+        "columns", "List a scene's series columns, the CSV header of run: name, unit, label");
+    columnsCmd->add_option("scene", columnsScene, "A scene kind (" + sceneKinds() + ") or a preset")
         ->required();
+    columnsCmd->footer(sceneUnits());
 
     RunOptions run;
     auto* runCmd = app.add_subcommand("run", "Run a preset and write observables as CSV");
     runCmd->add_option("preset", run.preset, "Built-in preset name or preset file")->required();
     runCmd->add_option("--steps", run.steps, "Number of steps (default: the preset's run length, else 1000)")
         ->transform(wholeNumber(0, kMaxSteps, "10⁹ steps are days of computing even for a small scene"));
-    runCmd->add_option("--set", run.sets, "Override a parameter: key=value (repeatable)");
+    runCmd->add_option("--set", run.sets,
+                       "Override a parameter: key=value (repeatable), in the scene's units");
     runCmd->add_option("--seed", run.seed, "Random seed (default: the preset's)")
         ->transform(wholeNumber(0, std::numeric_limits<long long>::max()));
     runCmd->add_option("--threads", run.threads, "OpenMP threads (default: all cores)")
@@ -76,6 +79,7 @@ int main(int argc, char** argv) {
         ->add_option("--backend", run.backend,
                      "cpu, gl (OpenGL 4.3 compute) or auto (the GPU for large scenes)")
         ->check(CLI::IsMember({"cpu", "gl", "auto"}));
+    runCmd->footer(sceneUnits());
 
     BenchOptions bench;
     auto* benchCmd =
@@ -83,12 +87,14 @@ int main(int argc, char** argv) {
     benchCmd->add_option("preset", bench.preset, "Built-in preset name or preset file")->required();
     benchCmd->add_option("--steps", bench.steps, "Timed steps per repeat")
         ->transform(wholeNumber(1, kMaxSteps));
-    benchCmd->add_option("--set", bench.sets, "Override a parameter: key=value (repeatable)");
+    benchCmd->add_option("--set", bench.sets,
+                         "Override a parameter: key=value (repeatable), in the scene's units");
     benchCmd->add_option("--threads", bench.threads, "OpenMP threads")->transform(threadCount());
     benchCmd->add_option("--backend", bench.backend, "cpu, gl or auto")
         ->check(CLI::IsMember({"cpu", "gl", "auto"}));
     benchCmd->add_option("--repeats", bench.repeats, "Timed repeats; the median is reported")
         ->transform(wholeNumber(1, 1000));
+    benchCmd->footer(sceneUnits());
 
     EchoOptions echo;
     auto* echoCmd = app.add_subcommand(

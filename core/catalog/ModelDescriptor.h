@@ -44,9 +44,18 @@ struct PlotSpec {
     PlotPanel lower;
 };
 
+// The units a kind's parameters, series and presets are written in: one system per kind, declared in its
+// registration and shown from there (the parameter panel's first line, `particlelab-cli list` and the
+// help of `run`, `bench` and `columns`).
+struct UnitSystem {
+    std::string name;    // short, for a line or a column: "reduced (L, T, M)", "SI"
+    std::string summary; // each quantity and its unit: "length L, time T, mass M; energies and kT in M·L²/T²"
+};
+
 struct ModelDescriptor {
     std::string kind;  // "gas": presets' "model", resources/presets/<kind>/, the CLI's scene names
     std::string title; // "Gas (molecular dynamics)"
+    UnitSystem units;
     const std::vector<ParamSpec>* specs = nullptr;
     // A CPU model reset to its defaults.
     std::unique_ptr<Model> (*create)() = nullptr;

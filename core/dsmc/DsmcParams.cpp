@@ -1,5 +1,6 @@
 // The DSMC parameter table: units, ranges, tooltips, and which values act at once.
 #include "DsmcParams.h"
+#include "MolecularParams.h"
 
 #include <sstream>
 
@@ -7,6 +8,11 @@ namespace pl {
 
 namespace {
 constexpr double kMaxParticles = 1 << 26; // 67 M: 32 bytes each
+
+// The molecule (the table the wind tunnel shares, MolecularParams.h): the mass with the cell, the
+// cross-section model in a section of its own; the defaults are O2, and the seed's σ is used as written.
+const MolecularParamsText kMolecule{
+    .massGroup = "Gas and cell", .collisionGroup = "Collisions", .gas = "O2", .seedScene = true};
 } // namespace
 
 double DsmcParams::mass() const {
@@ -36,9 +42,7 @@ const std::vector<ParamField<DsmcParams>>& DsmcParams::fields() {
     static const std::vector<ParamField<P>> list = [] {
         const P d;
         std::vector<ParamField<P>> f;
-        f.push_back(
-            bindReal(&P::massAmu, makeSpec("mass_amu", "Molecular mass", "u", "Gas and cell",
-                                           "Mass of one molecule; O2 is 32.", 1e-3, 1e6, 1, d.massAmu)));
+        f.push_back(molecularMassField<P>(kMolecule));
         f.push_back(bindReal(&P::fn, makeSpec("fn", "Particle weight F_N", "", "Gas and cell",
                                               "Real molecules each simulated particle stands for (seed 5e8).",
                                               1e-6, 1e30, 0, d.fn, true)));
@@ -52,28 +56,7 @@ const std::vector<ParamField<DsmcParams>>& DsmcParams::fields() {
             bindInteger(&P::runSteps, makeSpec("run_steps", "Run length", "steps", "Gas and cell",
                                                "The run stops after this many steps (seed 500); 0 runs on.",
                                                0, 1e12, 100, double(d.runSteps), true)));
-        f.push_back(bindChoice(&P::crossSection,
-                               makeChoice("cross_section", "Cross-section", "Collisions",
-                                          "seed: σ = 1e-18 c_r^-1/2 m² as written; hard-sphere: σ = π d²; "
-                                          "vhs: variable hard sphere (d_ref, T_ref, ω); maxwell: σ c_r "
-                                          "constant.",
-                                          true)));
-        f.push_back(bindReal(&P::diameter, makeSpec("diameter", "Hard-sphere diameter", "m", "Collisions",
-                                                    "Molecular diameter of the hard-sphere model.", 1e-12,
-                                                    1e-6, 0, d.diameter, true)));
-        f.push_back(bindReal(&P::vhsDiameter, makeSpec("vhs_d_ref", "VHS d_ref", "m", "Collisions",
-                                                       "VHS reference diameter (O2: 4.07e-10).", 1e-12, 1e-6,
-                                                       0, d.vhsDiameter, true)));
-        f.push_back(bindReal(&P::vhsTref, makeSpec("vhs_T_ref", "VHS T_ref", "K", "Collisions",
-                                                   "Temperature at which d = d_ref (273 K).", 1e-3, 1e6, 1,
-                                                   d.vhsTref, true)));
-        f.push_back(bindReal(&P::vhsOmega, makeSpec("vhs_omega", "VHS ω", "", "Collisions",
-                                                    "Viscosity index: 0.5 hard sphere, 1 Maxwell, O2 0.77.",
-                                                    0.5, 1.0, 0.01, d.vhsOmega, true)));
-        f.push_back(
-            bindReal(&P::maxwellSigmaCr, makeSpec("maxwell_sigma_cr", "Maxwell σ c_r", "m³/s", "Collisions",
-                                                  "The constant σ c_r of Maxwell molecules.", 1e-30, 1e-5, 0,
-                                                  d.maxwellSigmaCr, true)));
+        for (auto& field : crossSectionFields<P>(kMolecule)) f.push_back(std::move(field));
         f.push_back(bindReal(&P::sigmaCrMaxInit,
                              makeSpec("sigma_cr_max_init", "Initial (σ c_r)_max", "m³/s", "Collisions",
                                       "First guess of (σ c_r)_max (the seed: 1e-18); 0 estimates it from the "

@@ -1,4 +1,4 @@
-// The DSMC cell's registration: its kind, parameters, creator, particle count, series and plots, once.
+// The DSMC cell's registration: its kind, units, parameters, creator, particle count, series and plots, once.
 #include "DsmcSeries.h"
 #include "catalog/ModelDescriptor.h"
 
@@ -10,6 +10,7 @@ const ModelDescriptor& dsmcRegistration() {
     static const ModelDescriptor descriptor{
         .kind = "dsmc",
         .title = "Rarefied gas (DSMC)",
+        .units = {"SI", "length m, time s, mass kg, temperature K; molecular mass in u"},
         .specs = &DsmcParams::describe(),
         .create = []() -> std::unique_ptr<Model> { return std::make_unique<DsmcModel>(); },
         .particleCount =

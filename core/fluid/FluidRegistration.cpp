@@ -1,4 +1,4 @@
-// The fluid's registration: its kind, parameters, creator, particle count, series and plots, once.
+// The fluid's registration: its kind, units, parameters, creator, particle count, series and plots, once.
 #include "FluidSeries.h"
 #include "FluidSpawnGrid.h"
 #include "catalog/ModelDescriptor.h"
@@ -24,6 +24,7 @@ const ModelDescriptor& fluidRegistration() {
     static const ModelDescriptor descriptor{
         .kind = "fluid",
         .title = "Fluid (position-based)",
+        .units = {"mixed (L, s)", "length L, time s, unit particle mass; gravity in L/s²"},
         .specs = &FluidParams::describe(),
         .create = []() -> std::unique_ptr<Model> { return std::make_unique<FluidModel>(); },
         .particleCount =

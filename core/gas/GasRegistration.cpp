@@ -1,4 +1,4 @@
-// The gas's registration: its kind, parameters, creator, particle count, series and plots, once.
+// The gas's registration: its kind, units, parameters, creator, particle count, series and plots, once.
 #include "GasSeries.h"
 #include "catalog/ModelDescriptor.h"
 
@@ -10,6 +10,7 @@ const ModelDescriptor& gasRegistration() {
     static const ModelDescriptor descriptor{
         .kind = "gas",
         .title = "Gas (molecular dynamics)",
+        .units = {"reduced (L, T, M)", "length L, time T, mass M; energies and kT in M·L²/T²"},
         .specs = &GasParams::describe(),
         .create = []() -> std::unique_ptr<Model> { return std::make_unique<GasModel>(); },
         .particleCount =

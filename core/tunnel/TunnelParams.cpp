@@ -1,6 +1,7 @@
 // The wind tunnel's parameter table: units, ranges, tooltips, which values act at once, and the
 // cross-field checks.
 #include "TunnelParams.h"
+#include "dsmc/MolecularParams.h"
 
 #include <string>
 #include <tuple>
@@ -74,30 +75,10 @@ const std::vector<ParamField<TunnelParams>>& TunnelParams::fields() {
         f.push_back(bindInteger(&P::runSteps, makeSpec("run_steps", "Run length", "steps", domain,
                                                        "The run stops after this many steps; 0 runs on.", 0,
                                                        1e12, 100, double(d.runSteps), true)));
-        f.push_back(bindReal(&P::massAmu,
-                             makeSpec("mass_amu", "Molecular mass", "u", gas,
-                                      "Mass of one molecule; argon is 39.948.", 1e-3, 1e6, 1, d.massAmu)));
-        f.push_back(bindChoice(&P::crossSection,
-                               makeChoice("cross_section", "Cross-section", gas,
-                                          "seed: σ = 1e-18 c_r^-1/2 m²; hard-sphere: σ = π d²; vhs: "
-                                          "variable hard sphere (d_ref, T_ref, ω); maxwell: σ c_r constant.",
-                                          true)));
-        f.push_back(bindReal(&P::diameter, makeSpec("diameter", "Hard-sphere diameter", "m", gas,
-                                                    "Molecular diameter of the hard-sphere model.", 1e-12,
-                                                    1e-6, 0, d.diameter, true)));
-        f.push_back(bindReal(&P::vhsDiameter, makeSpec("vhs_d_ref", "VHS d_ref", "m", gas,
-                                                       "VHS reference diameter (argon: 4.17e-10).", 1e-12,
-                                                       1e-6, 0, d.vhsDiameter, true)));
-        f.push_back(bindReal(&P::vhsTref, makeSpec("vhs_T_ref", "VHS T_ref", "K", gas,
-                                                   "Temperature at which d = d_ref (273 K).", 1e-3, 1e6, 1,
-                                                   d.vhsTref, true)));
-        f.push_back(
-            bindReal(&P::vhsOmega, makeSpec("vhs_omega", "VHS ω", "", gas,
-                                            "Viscosity index: 0.5 hard sphere, 1 Maxwell, argon 0.81.", 0.5,
-                                            1.0, 0.01, d.vhsOmega, true)));
-        f.push_back(bindReal(&P::maxwellSigmaCr, makeSpec("maxwell_sigma_cr", "Maxwell σ c_r", "m³/s", gas,
-                                                          "The constant σ c_r of Maxwell molecules.", 1e-30,
-                                                          1e-5, 0, d.maxwellSigmaCr, true)));
+        // The molecule: the DSMC cell's table (MolecularParams.h), in one section; the defaults are argon.
+        const MolecularParamsText molecule{.massGroup = gas, .collisionGroup = gas, .gas = "argon"};
+        f.push_back(molecularMassField<P>(molecule));
+        for (auto& field : crossSectionFields<P>(molecule)) f.push_back(std::move(field));
         f.push_back(bindReal(&P::streamDensity, makeSpec("stream_density", "Number density", "m⁻³", stream,
                                                          "Number density of the free stream.", 1e3, 1e32, 0,
                                                          d.streamDensity, true)));

@@ -38,7 +38,8 @@ struct TunnelParams {
     double dt = 2e-7;                        // [s]
     long long runSteps = 0;                  // the run stops here; 0 runs on
 
-    // Gas (argon by default; the cross-section models are the DSMC cell's, common to both scenes)
+    // Gas (argon by default; the cross-section models and their parameters are the DSMC cell's, common to
+    // both scenes: dsmc/MolecularParams.h)
     double massAmu = 39.948;
     DsmcCrossSection crossSection = DsmcCrossSection::Vhs;
     double diameter = 3.595e-10;     // hard-sphere diameter [m]

@@ -1,4 +1,4 @@
-// The wind tunnel's registration: its kind, parameters, creator, particle count, series and plots, once.
+// The tunnel's registration: its kind, units, parameters, creator, particle count, series and plots, once.
 #include "TunnelSeries.h"
 #include "catalog/ModelDescriptor.h"
 
@@ -10,6 +10,9 @@ const ModelDescriptor& tunnelRegistration() {
     static const ModelDescriptor descriptor{
         .kind = "tunnel",
         .title = "Rarefied flow (DSMC)",
+        .units =
+            {"SI",
+             "length m, time s, mass kg, temperature K; molecular mass in u; forces and F_N per m of depth"},
         .specs = &TunnelParams::describe(),
         .create = []() -> std::unique_ptr<Model> { return std::make_unique<TunnelModel>(); },
         .particleCount =

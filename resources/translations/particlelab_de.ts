@@ -1488,6 +1488,34 @@ Wirkt nach „Zurücksetzen“.</translation>
         <source>Not sampled yet: the fields appear after the start-up steps</source>
         <translation>Noch nicht abgetastet: die Felder erscheinen nach den Anlaufschritten</translation>
     </message>
+    <message>
+        <source>SI</source>
+        <translation>SI</translation>
+    </message>
+    <message>
+        <source>length L, time T, mass M; energies and kT in M·L²/T²</source>
+        <translation>Länge L, Zeit T, Masse M; Energien und kT in M·L²/T²</translation>
+    </message>
+    <message>
+        <source>length L, time s, unit particle mass; gravity in L/s²</source>
+        <translation>Länge L, Zeit s, Teilchenmasse 1; Schwerkraft in L/s²</translation>
+    </message>
+    <message>
+        <source>length m, time s, mass kg, temperature K; molecular mass in u</source>
+        <translation>Länge m, Zeit s, Masse kg, Temperatur K; Molekülmasse in u</translation>
+    </message>
+    <message>
+        <source>length m, time s, mass kg, temperature K; molecular mass in u; forces and F_N per m of depth</source>
+        <translation>Länge m, Zeit s, Masse kg, Temperatur K; Molekülmasse in u; Kräfte und F_N je m Tiefe</translation>
+    </message>
+    <message>
+        <source>mixed (L, s)</source>
+        <translation>gemischt (L, s)</translation>
+    </message>
+    <message>
+        <source>reduced (L, T, M)</source>
+        <translation>reduziert (L, T, M)</translation>
+    </message>
 </context>
 <context>
     <name>pl::ui::Autosave</name>
@@ -2628,6 +2656,10 @@ Wirkt nach „Zurücksetzen“.</translation>
     <message>
         <source>%1: “%2” is not a number (allowed: %3)</source>
         <translation>%1: „%2“ ist keine Zahl (erlaubt: %3)</translation>
+    </message>
+    <message>
+        <source>Units: %1</source>
+        <translation>Einheiten: %1</translation>
     </message>
 </context>
 <context>

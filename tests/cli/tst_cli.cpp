@@ -1,5 +1,7 @@
 // particlelab-cli as a user runs it: list, run with every output file, bench, and each error path with
 // its exit code and message.
+#include "catalog/ModelCatalog.h"
+
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QProcess>
@@ -38,6 +40,23 @@ private slots:
         for (const char* name : {"gas-seed", "gas-classroom", "gas-mixture", "dsmc-seed", "dsmc-bkw",
                                  "dsmc-maxwell-relax", "fluid-seed", "fluid-dam-break", "fluid-obstacle"})
             QVERIFY(r.out.contains(name));
+        // Each line ends in the unit system its kind declares.
+        for (const QString& line : r.out.split('\n', Qt::SkipEmptyParts)) {
+            const pl::ModelDescriptor* kind = pl::findModel(line.section('\t', 1, 1).toStdString());
+            QVERIFY2(kind, qPrintable(line));
+            QCOMPARE(line.section('\t', -1), QString::fromStdString(kind->units.name));
+        }
+    }
+
+    // The help of the commands that take parameters or print columns names every kind's units.
+    void helpSaysEachKindsUnits() {
+        for (const char* command : {"run", "bench", "columns"}) {
+            const auto r = cli({command, "--help"});
+            QCOMPARE(r.exitCode, 0);
+            for (const pl::ModelDescriptor& kind : pl::modelCatalog())
+                QVERIFY2(r.out.contains(QString::fromStdString(kind.units.name + ": " + kind.units.summary)),
+                         qPrintable(QString(command) + ": " + r.out));
+        }
     }
 
     // The columns command lists what run writes: its names are the CSV header, in order.

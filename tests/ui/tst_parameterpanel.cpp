@@ -1,6 +1,7 @@
-// One way to reject a value: a rejected field keeps what was typed, turns red and says under it, in the
-// labels' words with unit and allowed range, what is wrong; no dialog opens and the model is untouched.
-// A valid value clears the mark. Values are typed with QTest into the panel's real editors.
+// The units line says the kind's unit system; and one way to reject a value: a rejected field keeps what was
+// typed, turns red and says under it, in the labels' words with unit and allowed range, what is wrong; no
+// dialog opens and the model is untouched. A valid value clears the mark. Values are typed with QTest into
+// the panel's real editors.
 #include "ExperimentDocument.h"
 #include "MainWindow.h"
 #include "SimulationController.h"
@@ -60,6 +61,19 @@ private slots:
     void cleanup() {
         window_->document()->setModified(false);
         window_.reset();
+    }
+
+    // The first line says the kind's unit system, from its registration; the tooltip spells it out.
+    void theFirstLineSaysTheKindsUnits() {
+        for (const ModelDescriptor& kind : modelCatalog()) {
+            QVERIFY(window_->openPreset(QString::fromStdString(builtinPresetsOf(kind.kind).front()->name)));
+            const auto* line = window_->parameters()->findChild<QLabel*>("unitsLine");
+            QVERIFY(line);
+            QVERIFY(line->isVisible());
+            QCOMPARE(line->text(), "Units: " + QString::fromStdString(kind.units.name));
+            QCOMPARE(line->toolTip(), QString::fromStdString(kind.units.summary));
+            window_->document()->setModified(false);
+        }
     }
 
     void aTimeStepOutOfRangeStaysRedAndSaysWhy() {

@@ -134,11 +134,13 @@ private slots:
         QVERIFY(preferences);
         QCOMPARE(preferences->text(), QStringLiteral("&Einstellungen…"));
 
-        // The core's texts reach the panels: a parameter label and the scene's title.
+        // The core's texts reach the panels: a parameter label, the units line and the scene's title.
         QVERIFY(window.document()->open("gas-classroom", true));
         QStringList labels;
         for (const QLabel* label : window.parameters()->findChildren<QLabel*>()) labels << label->text();
         QVERIFY2(labels.contains(QStringLiteral("Behälterbreite [L] ⟲")), qPrintable(labels.join(" | ")));
+        QVERIFY2(labels.contains(QStringLiteral("Einheiten: reduziert (L, T, M)")),
+                 qPrintable(labels.join(" | ")));
         QStringList scenes;
         for (const QComboBox* box : window.findChildren<QComboBox*>())
             for (int i = 0; i < box->count(); ++i) scenes << box->itemText(i);

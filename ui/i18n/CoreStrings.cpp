@@ -58,6 +58,8 @@ std::vector<std::string> coreDisplayStrings() {
     };
     for (const ModelDescriptor& info : modelCatalog()) {
         add(info.title);
+        add(info.units.name); // the parameter panel's first line and its tooltip
+        add(info.units.summary);
         for (const ParamSpec& spec : *info.specs) {
             add(spec.label);
             add(spec.unit); // mostly symbols that stay as they are, but some are words ("steps")

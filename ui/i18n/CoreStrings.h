@@ -11,10 +11,10 @@ namespace pl::ui {
 // QCoreApplication::translate(kCoreContext, text) where it displays them (ui/i18n/Translations.h).
 inline constexpr const char* kCoreContext = "pl::core";
 
-// Every distinct core text a user can see: model titles, each model's ParamSpec label, unit, group and
-// tooltip, and the legend, axis and hint texts of every built-in preset's scene and histograms. Sorted,
-// unique, no empty entries. Texts with numbers in them (histogram summaries, beam legends) are not included:
-// they change with every frame or parameter and cannot be looked up.
+// Every distinct core text a user can see: model titles and unit systems, each model's ParamSpec label,
+// unit, group and tooltip, and the legend, axis and hint texts of every built-in preset's scene and
+// histograms. Sorted, unique, no empty entries. Texts with numbers in them (histogram summaries, beam
+// legends) are not included: they change with every frame or parameter and cannot be looked up.
 std::vector<std::string> coreDisplayStrings();
 
 // The texts as C++ that lupdate reads: one QT_TRANSLATE_NOOP(kCoreContext, "…") per text.

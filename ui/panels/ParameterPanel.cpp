@@ -5,6 +5,7 @@
 
 #include "ScientificSpinBox.h"
 #include "SimulationController.h"
+#include "catalog/ModelCatalog.h"
 #include "i18n/Translations.h"
 
 #include <QCheckBox>
@@ -53,6 +54,10 @@ ParameterPanel::ParameterPanel(SimulationController* controller, QWidget* parent
     : QWidget(parent), controller_(controller) {
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(4, 4, 4, 4);
+    units_ = new QLabel(this);
+    units_->setObjectName("unitsLine");
+    units_->setWordWrap(true);
+    layout->addWidget(units_);
     auto* banner = new QHBoxLayout;
     pending_ = new QLabel(this);
     pending_->setWordWrap(true);
@@ -86,6 +91,7 @@ void ParameterPanel::rebuild() {
     editors_.clear();
     setters_.clear();
     problems_.clear();
+    showUnits();
     const Model* model = controller_->model();
     if (!model) return;
     std::map<std::string, QFormLayout*> forms;
@@ -117,6 +123,16 @@ void ParameterPanel::rebuild() {
     groups_->addStretch(1);
     showValues();
     updatePendingBanner();
+}
+
+// The units come from the kind's registration, as the CLI's help and the docs print them.
+void ParameterPanel::showUnits() {
+    const Model* model = controller_->model();
+    const ModelDescriptor* kind = model ? findModel(model->kind()) : nullptr;
+    units_->setVisible(kind != nullptr);
+    if (!kind) return;
+    units_->setText(tr("Units: %1").arg(coreText(kind->units.name)));
+    units_->setToolTip(coreText(kind->units.summary));
 }
 
 QWidget* ParameterPanel::createEditor(const ParamSpec& spec) {

@@ -1,7 +1,8 @@
-// The Parameters dock: one editor per ParamSpec of the loaded model, grouped as the specs say, with units
-// and tooltips. Live parameters act at once; the others are marked and wait for Reset, and the panel
-// says how many are waiting. A rejected value stays in its field as typed; the field turns red and a line
-// under it says what is wrong, in the labels' words, until a valid value is applied or Escape drops it.
+// The Parameters dock: the kind's unit system on its first line, then one editor per ParamSpec of the loaded
+// model, grouped as the specs say, with units and tooltips. Live parameters act at once; the others are
+// marked and wait for Reset, and the panel says how many are waiting. A rejected value stays in its field as
+// typed; the field turns red and a line under it says what is wrong, in the labels' words, until a valid
+// value is applied or Escape drops it.
 #pragma once
 
 #include "common/ParamSpec.h"
@@ -33,6 +34,7 @@ public:
 
 private:
     void rebuild();
+    void showUnits();
     void showValues();
     void updatePendingBanner();
     QWidget* createEditor(const ParamSpec& spec);
@@ -43,6 +45,7 @@ private:
     SimulationController* controller_;
     QVBoxLayout* groups_ = nullptr;
     QWidget* content_ = nullptr;
+    QLabel* units_ = nullptr; // "Units: reduced (L, T, M)"; the tooltip says each quantity's unit
     QLabel* pending_ = nullptr;
     QPushButton* resetButton_ = nullptr;
     std::map<std::string, QWidget*> editors_;

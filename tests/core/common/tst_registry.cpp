@@ -1,5 +1,6 @@
 // The model registry: every registration agrees with the model it creates (series columns, particle
-// count, parameters), its plots name columns it has, and every built-in preset belongs to a registered kind.
+// count, parameters), declares its units, its plots name columns it has, and every built-in preset belongs
+// to a registered kind.
 #include "catalog/ModelCatalog.h"
 #include "gl/GpuModels.h"
 
@@ -43,6 +44,16 @@ private slots:
         Preset unknown;
         unknown.model = "no-such-kind";
         QVERIFY_THROWS_EXCEPTION(PresetError, particleCount(unknown));
+    }
+
+    // One unit system per kind, declared once: the parameter panel, `particlelab-cli list` and the help of
+    // run and columns print it from the registration.
+    void everyKindDeclaresItsUnits() {
+        for (const ModelDescriptor& d : modelCatalog()) {
+            QVERIFY2(!d.units.name.empty(), d.kind.c_str());
+            QVERIFY2(!d.units.summary.empty(), d.kind.c_str());
+            QVERIFY2(d.units.summary != d.units.name, d.kind.c_str()); // the summary spells the units out
+        }
     }
 
     // The descriptor's column list is what the model samples: same names, same order, same count.

@@ -1,9 +1,11 @@
 // One DSMC collision conserves momentum and energy to round-off and scatters isotropically; a whole run
-// conserves them too, and the seed run ends at 17.83 K with mean velocity 200 m/s.
+// conserves them too, and the seed run ends at 17.83 K with mean velocity 200 m/s. The molecule's
+// parameters are one table for the cell and the wind tunnel.
 #include "catalog/ModelCatalog.h"
 #include "common/Philox.h"
 #include "dsmc/DsmcKernels.h"
 #include "dsmc/DsmcModel.h"
+#include "tunnel/TunnelParams.h"
 
 #include <QtTest>
 
@@ -113,6 +115,28 @@ private slots:
         QCOMPARE(std::get<double>(model.params().at("count_a")), 1000.0); // nothing applied
         QVERIFY_THROWS_EXCEPTION(ParamError, model.setParams({{"cross_section", std::string("soft")}}));
         QVERIFY(!model.reversible());
+    }
+
+    // The cell and the wind tunnel describe a molecule with one table (dsmc/MolecularParams.h): the same
+    // keys, labels, units, ranges and timing; each keeps its own defaults, gas and panel sections.
+    void theCellAndTheTunnelDescribeAMoleculeAlike() {
+        const std::vector<ParamSpec>&cell = DsmcParams::describe(), &tunnel = TunnelParams::describe();
+        for (const char* key : {"mass_amu", "cross_section", "diameter", "vhs_d_ref", "vhs_T_ref",
+                                "vhs_omega", "maxwell_sigma_cr"}) {
+            const ParamSpec *a = findSpec(cell, key), *b = findSpec(tunnel, key);
+            QVERIFY2(a && b, key);
+            QCOMPARE(a->label, b->label);
+            QCOMPARE(a->unit, b->unit);
+            QVERIFY2(a->kind == b->kind && a->min == b->min && a->max == b->max && a->step == b->step, key);
+            QVERIFY2(a->choices == b->choices && a->appliesLive == b->appliesLive, key);
+        }
+        QVERIFY(findSpec(cell, "vhs_omega")->defaultValue == ParamValue{DsmcParams{}.vhsOmega});
+        QVERIFY(findSpec(tunnel, "vhs_omega")->defaultValue == ParamValue{TunnelParams{}.vhsOmega});
+        QCOMPARE(findSpec(cell, "vhs_d_ref")->tooltip, std::string("VHS reference diameter (O2: 4.07e-10)."));
+        QCOMPARE(findSpec(tunnel, "vhs_d_ref")->tooltip,
+                 std::string("VHS reference diameter (argon: 4.17e-10)."));
+        QCOMPARE(findSpec(cell, "cross_section")->group, std::string("Collisions"));
+        QCOMPARE(findSpec(tunnel, "cross_section")->group, std::string("Gas"));
     }
 };
 
