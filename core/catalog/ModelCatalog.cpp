@@ -33,9 +33,10 @@ const std::vector<std::reference_wrapper<const ModelDescriptor>>& modelCatalog()
 }
 
 void registerModel(const ModelDescriptor& descriptor) {
-    if (descriptor.kind.empty() || !descriptor.specs || !descriptor.create || !descriptor.particleCount)
+    if (descriptor.kind.empty() || descriptor.units.name.empty() || !descriptor.specs || !descriptor.create ||
+        !descriptor.particleCount)
         throw std::invalid_argument(
-            "a model kind needs a name, parameter specs, a creator and a particle count");
+            "a model kind needs a name, its units, parameter specs, a creator and a particle count");
     if (findModel(descriptor.kind))
         throw std::invalid_argument("the model kind '" + descriptor.kind + "' is registered already");
     registeredKinds().push_back(descriptor);

@@ -107,7 +107,7 @@ private slots:
         QVERIFY(modelCatalog().size() >= 5);
         QVERIFY(findModel("ballistic") != nullptr);
         for (const ModelDescriptor& d : modelCatalog())
-            QVERIFY2(d.create && d.specs && d.particleCount, d.kind.c_str());
+            QVERIFY2(d.create && d.specs && d.particleCount && !d.units.name.empty(), d.kind.c_str());
     }
 
     // ModelBase::step(): one count and one signed dt per step, whatever the model.

@@ -194,6 +194,7 @@ const ModelDescriptor& ballisticRegistration() {
     static const ModelDescriptor descriptor{
         .kind = "ballistic",
         .title = "Ballistic points (test kind)",
+        .units = {"reduced (L, T)", "length L, time T, unit mass; energies per unit mass in L²/T²"},
         .specs = &BallisticParams::describe(),
         .create = []() -> std::unique_ptr<Model> { return std::make_unique<BallisticModel>(); },
         .particleCount =
