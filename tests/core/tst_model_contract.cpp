@@ -309,7 +309,13 @@ private slots:
     void toolsClampIndexAndRest() {
         PL_CONTRACT_MODEL(made);
         SceneTools* tools = model.tools();
-        if (!tools) QSKIP("this kind has no mouse tools");
+        if (!tools) { // a kind without tools (the DSMC cell) offers none and takes no obstacles in a preset
+            Preset withObstacle = preset;
+            withObstacle.obstacles.push_back(discAt(0.0, 0.0, 1.0));
+            QVERIFY_THROWS_EXCEPTION(PresetError, model.reset(withObstacle));
+            QVERIFY(model.tools() == nullptr);
+            return;
+        }
         while (!tools->obstacles().empty()) tools->removeObstacle(0);
         const Box box = boxOf(model);
         const double radius = 0.01 * box.width();
