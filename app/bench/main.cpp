@@ -41,6 +41,8 @@ constexpr double kTunnelGoal = 2e9;
 
 int main(int argc, char** argv) {
     CLI::App app{"ParticleLab GPU benchmark: particle-steps per second against N, headless"};
+    app.set_version_flag("--version", std::string("particlelab-bench ") + PARTICLELAB_VERSION,
+                         "Print the program's version and exit");
     std::vector<std::size_t> gasSizes{4096, 16384, 65536, 262144, 1048576, 4194304};
     std::vector<std::size_t> fluidSizes{10000, 40000, 160000, 640000, 1048576};
     std::vector<std::size_t> tunnelSizes{100000, 1000000, 10000000};
@@ -78,7 +80,7 @@ int main(int argc, char** argv) {
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
-        if (e.get_exit_code() == 0) return app.exit(e); // --help: the help text, exit 0
+        if (e.get_exit_code() == 0) return app.exit(e); // --help, --version: the text, exit 0
         std::cerr << "particlelab-bench: " << e.what() << "; see 'particlelab-bench --help'\n";
         return 2; // a bad option, as particlelab-cli answers it
     }

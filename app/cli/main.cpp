@@ -23,6 +23,8 @@ int main(int argc, char** argv) {
     using namespace pl::cli;
     CLI::App app{"ParticleLab headless runner: list presets, run experiments to CSV, benchmark"};
     app.require_subcommand(1);
+    app.set_version_flag("--version", std::string("particlelab-cli ") + PARTICLELAB_VERSION,
+                         "Print the program's version and exit");
 
     app.add_subcommand("list", "List the built-in presets with a one-line description");
 
@@ -183,7 +185,7 @@ int main(int argc, char** argv) {
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
-        if (e.get_exit_code() == 0) return app.exit(e); // --help: the help text, exit 0
+        if (e.get_exit_code() == 0) return app.exit(e); // --help, --version: the text, exit 0
         std::cerr << "particlelab-cli: " << e.what() << "; see '" << helpCommand(app) << "'\n";
         return kBadInput;
     }

@@ -2,6 +2,7 @@
 // Usage: particlelab [PRESET|FILE] [--backend cpu|gl|auto] [--screenshot FILE [--frames N]]
 //                    [--measure-fps SECONDS] [--present]
 //        particlelab --lab PAGE --plot FILE [--csv FILE]   (a methods-lab page, no window)
+//        particlelab --help | --version                    (answered without a display)
 #include "Autosave.h"
 #include "ExperimentDocument.h"
 #include "FrameProfile.h"
@@ -18,6 +19,8 @@
 #include <QTimer>
 #include <cstdio>
 #include <cstdlib>
+#include <optional>
+#include <string_view>
 #include <unistd.h>
 
 namespace {
@@ -55,10 +58,93 @@ void drawFramesRightAfterTheSteps() {
     if (!qEnvironmentVariableIsSet("QT_QPA_UPDATE_IDLE_TIME")) qputenv("QT_QPA_UPDATE_IDLE_TIME", "0");
 }
 
+// The program's options, described once: --help, the man page (help2man reads --help) and main() use them.
+struct CommandLine {
+    const QCommandLineOption screenshot{"screenshot",
+                                        "Run --frames frames, save the window as a PNG and quit.", "file"};
+    const QCommandLineOption frames{"frames", "Frames to run before --screenshot (default 300).", "count",
+                                    "300"};
+    const QCommandLineOption measureFps{
+        "measure-fps", "Run for this many seconds as a user would, print the frame rate and quit.",
+        "seconds"};
+    const QCommandLineOption present{
+        "present", "Open in present mode: full screen, the viewport, one plot and a lesson's controls."};
+    const QCommandLineOption backend{"backend", "Compute backend: cpu, gl or auto (default: as last chosen).",
+                                     "name"};
+    const QCommandLineOption lab{"lab",
+                                 "Run a methods-lab page (" + pl::ui::labPageNames().join(", ") +
+                                     ") without a window, save its plot to --plot (PNG, SVG or PDF) and "
+                                     "quit; needs no display.",
+                                 "page"};
+    const QCommandLineOption plotFile{"plot", "Image file of --lab's plot.", "file"};
+    const QCommandLineOption csvFile{"csv", "CSV file of --lab's plot data.", "file"};
+
+    void describe(QCommandLineParser& parser) const {
+        parser.setApplicationDescription("ParticleLab: an interactive physics lab of particles");
+        parser.addHelpOption();
+        parser.addVersionOption();
+        parser.addPositionalArgument(
+            "preset",
+            "Built-in preset name, experiment (.particlelab, .json) or snapshot (.plsnap) file "
+            "(default: gas-seed)",
+            "[preset]");
+        for (const QCommandLineOption* option :
+             {&lab, &plotFile, &csvFile, &backend, &screenshot, &frames, &measureFps, &present})
+            parser.addOption(*option);
+    }
+};
+
+bool environmentHas(const char* name) {
+    const char* value = std::getenv(name);
+    return value && *value;
+}
+
+// What needs no window is answered before the QApplication, whose platform plugin aborts the process when
+// it finds no display: --version, --help (by a core application, which needs none) and the refusal of a
+// window without a display. A methods-lab page draws no window: without a display it uses Qt's offscreen
+// platform. Returns the exit code where the program is done.
+std::optional<int> answerWithoutDisplay(int argc, char** argv) {
+    bool help = false, helpAll = false, version = false, lab = false, platformChosen = false;
+    for (int i = 1; i < argc; ++i) {
+        const std::string_view arg = argv[i];
+        if (arg == "--") break; // what follows is a file name
+        help = help || arg == "-h" || arg == "-?" || arg == "--help";
+        helpAll = helpAll || arg == "--help-all";
+        version = version || arg == "-v" || arg == "--version";
+        lab = lab || arg == "--lab" || arg.starts_with("--lab=");
+        platformChosen = platformChosen || arg.starts_with("-platform") || arg.starts_with("--platform");
+    }
+    const bool display = environmentHas("DISPLAY") || environmentHas("WAYLAND_DISPLAY") ||
+                         environmentHas("QT_QPA_PLATFORM") || platformChosen;
+    if (version) {
+        std::printf("particlelab %s\n", PARTICLELAB_VERSION);
+        return 0;
+    }
+    // --help-all adds the options of Qt's GUI (-platform, -style, …), which only the QApplication knows.
+    if (help || (helpAll && !display)) {
+        QCoreApplication app(argc, argv);
+        QCommandLineParser parser;
+        const CommandLine options;
+        options.describe(parser);
+        (void)parser.parse(QCoreApplication::arguments()); // help is shown whatever else the line holds
+        parser.showHelp(0);                                // exits
+    }
+    if (display) return std::nullopt;
+    if (lab) {
+        setenv("QT_QPA_PLATFORM", "offscreen", 1);
+        return std::nullopt;
+    }
+    std::fprintf(stderr, "particlelab: there is no display to open the window on (neither DISPLAY nor "
+                         "WAYLAND_DISPLAY is set): start it in a desktop session, or use particlelab-cli "
+                         "to run experiments without a window.\n");
+    return 2;
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
     spinOpenMpWorkersBriefly(argv);
+    if (const std::optional<int> exitCode = answerWithoutDisplay(argc, argv)) return *exitCode;
     drawFramesRightAfterTheSteps();
     // The GPU models' context shares buffers with the viewports (ui/viewport/QtGlContext.h).
     QApplication::setAttribute(Qt::AA_ShareOpenGLContexts);
@@ -68,53 +154,28 @@ int main(int argc, char** argv) {
     QApplication::setDesktopFileName("particlelab");
     QApplication::setWindowIcon(QIcon::fromTheme("particlelab", QIcon(":/icons/particlelab.svg")));
     pl::ui::installLanguage(pl::ui::savedLanguage()); // before any widget is made: they translate once
+    QApplication::setApplicationVersion(PARTICLELAB_VERSION);
     QCommandLineParser parser;
-    parser.setApplicationDescription("ParticleLab: an interactive physics lab of particles");
-    parser.addHelpOption();
-    parser.addPositionalArgument("preset", "Built-in preset name or preset file (default: gas-seed)");
-    const QCommandLineOption screenshot("screenshot",
-                                        "Run --frames frames, save the window as a PNG and quit.", "file");
-    const QCommandLineOption frames("frames", "Frames to run before --screenshot (default 300).", "count",
-                                    "300");
-    const QCommandLineOption measureFps(
-        "measure-fps", "Run for this many seconds as a user would, print the frame rate and quit.",
-        "seconds");
-    const QCommandLineOption present(
-        "present", "Open in present mode: full screen, the viewport, one plot and a lesson's controls.");
-    const QCommandLineOption backend("backend", "Compute backend: cpu, gl or auto (default: as last chosen).",
-                                     "name");
-    const QCommandLineOption lab(
-        "lab",
-        "Run a methods-lab page (" + pl::ui::labPageNames().join(", ") +
-            ") without a window, save its plot to --plot (PNG, SVG or PDF) and quit.",
-        "page");
-    const QCommandLineOption plotFile("plot", "Image file of --lab's plot.", "file");
-    const QCommandLineOption csvFile("csv", "CSV file of --lab's plot data.", "file");
-    parser.addOption(lab);
-    parser.addOption(plotFile);
-    parser.addOption(csvFile);
-    parser.addOption(backend);
-    parser.addOption(screenshot);
-    parser.addOption(frames);
-    parser.addOption(measureFps);
-    parser.addOption(present);
+    const CommandLine options;
+    options.describe(parser);
     parser.process(app);
     const QStringList args = parser.positionalArguments();
-    if (parser.isSet(lab)) {
-        if (!parser.isSet(plotFile)) {
+    if (parser.isSet(options.lab)) {
+        if (!parser.isSet(options.plotFile)) {
             std::fprintf(stderr, "particlelab: --lab needs --plot FILE\n");
             return 2;
         }
-        const QString error =
-            pl::ui::runLabPage(parser.value(lab), parser.value(plotFile), parser.value(csvFile));
+        const QString error = pl::ui::runLabPage(parser.value(options.lab), parser.value(options.plotFile),
+                                                 parser.value(options.csvFile));
         if (!error.isEmpty()) std::fprintf(stderr, "particlelab: %s\n", qPrintable(error));
         return error.isEmpty() ? 0 : (error.startsWith("unknown page") ? 2 : 4);
     }
 
     pl::ui::MainWindow window;
-    if (parser.isSet(backend)) {
+    if (parser.isSet(options.backend)) {
         try {
-            window.controller()->setBackend(pl::gl::backendFromName(parser.value(backend).toStdString()));
+            window.controller()->setBackend(
+                pl::gl::backendFromName(parser.value(options.backend).toStdString()));
         } catch (const std::invalid_argument& e) {
             std::fprintf(stderr, "particlelab: %s\n", e.what());
             return 2;
@@ -123,24 +184,26 @@ int main(int argc, char** argv) {
     if (!window.document()->open(args.isEmpty() ? QStringLiteral("gas-seed") : args.first(), true)) return 2;
     window.resize(1280, 800);
     window.show();
-    if (!parser.isSet(screenshot) && !parser.isSet(measureFps)) window.autosave()->offerRestore();
-    if (parser.isSet(present)) window.presentMode()->setActive(true);
-    if (parser.isSet(screenshot)) {
-        for (int f = 0; f < parser.value(frames).toInt(); ++f) window.controller()->advanceFrame();
+    if (!parser.isSet(options.screenshot) && !parser.isSet(options.measureFps))
+        window.autosave()->offerRestore();
+    if (parser.isSet(options.present)) window.presentMode()->setActive(true);
+    if (parser.isSet(options.screenshot)) {
+        for (int f = 0; f < parser.value(options.frames).toInt(); ++f) window.controller()->advanceFrame();
         QApplication::processEvents(); // let queued plot replots and repaints run
-        const bool saved = window.windowImage().save(parser.value(screenshot));
+        const bool saved = window.windowImage().save(parser.value(options.screenshot));
         if (!saved)
-            std::fprintf(stderr, "particlelab: cannot write %s\n", qPrintable(parser.value(screenshot)));
+            std::fprintf(stderr, "particlelab: cannot write %s\n",
+                         qPrintable(parser.value(options.screenshot)));
         return saved ? 0 : 4;
     }
     window.controller()->play();
-    if (parser.isSet(measureFps)) {
+    if (parser.isSet(options.measureFps)) {
         // Frames actually drawn by the viewport while the simulation runs at its normal frame timer.
         QElapsedTimer clock; // lives until exec() returns, after the measurement
         clock.start();
         pl::ui::FrameProfile::instance().setEnabled(true);
         const long long startStep = window.controller()->model()->stepCount();
-        QTimer::singleShot(static_cast<int>(1000 * parser.value(measureFps).toDouble()), &app, [&] {
+        QTimer::singleShot(static_cast<int>(1000 * parser.value(options.measureFps).toDouble()), &app, [&] {
             const double seconds = clock.elapsed() / 1000.0;
             std::printf("{\"preset\": \"%s\", \"seconds\": %.2f, \"fps\": %.1f, \"steps_per_second\": %.0f, "
                         "\"frame_parts\": %s}\n",
