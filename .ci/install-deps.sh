@@ -1,11 +1,14 @@
 #!/usr/bin/env bash
 # Installs what ParticleLab needs on Debian 12 (bookworm): the one package list both quick-start
-# commands use. Installs only what is missing; needs root or sudo when something is.
+# commands use, and with the argument "packaging" also what .ci/package.sh checks the Debian package
+# with. Installs only what is missing; needs root or sudo when something is.
 set -euo pipefail
 
 packages=(
   # toolchain
   cmake g++ make pkg-config ca-certificates
+  # man pages from the programs' --help, the icon's PNG sizes from its SVG (both at build time)
+  help2man librsvg2-bin
   # Qt 6 widgets, OpenGL widgets, SVG, test; QCustomPlot's Qt 6 build
   qt6-base-dev libqt6opengl6-dev qt6-svg-dev libqcustomplot-dev
   # Qt Linguist: lupdate/lrelease, their CMake functions, and Qt's own strings in other languages
@@ -19,6 +22,13 @@ packages=(
   # LAMMPS (its binary is lmp) and Open MPI's mpirun: the scale-out agreement tests (docs/scale-out.md)
   lammps openmpi-bin
 )
+if [ "${1:-}" = packaging ]; then
+  packages+=(
+    # the package's checks: lintian, the freedesktop validators, man's warnings, a clean Debian root,
+    # and the colours of its screenshot (netpbm)
+    lintian desktop-file-utils appstream shared-mime-info man-db debootstrap netpbm
+  )
+fi
 
 missing=()
 for p in "${packages[@]}"; do
