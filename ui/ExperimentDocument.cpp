@@ -128,9 +128,11 @@ bool ExperimentDocument::save() {
 
 bool ExperimentDocument::saveAs() {
     QDir().mkpath(userPresetDirectory());
-    const QString suggested = QDir(userPresetDirectory()).filePath(label_ + ".json");
-    const QString path =
-        QFileDialog::getSaveFileName(parent_, tr("Save preset"), suggested, tr("Presets (*.json)"));
+    // .particlelab: the experiment's own file type (resources/desktop/particlelab.xml), which opens in
+    // ParticleLab from a file manager; the content is the same JSON as a .json preset's.
+    const QString suggested = QDir(userPresetDirectory()).filePath(label_ + ".particlelab");
+    const QString path = QFileDialog::getSaveFileName(parent_, tr("Save preset"), suggested,
+                                                      tr("Experiments (*.particlelab);;Presets (*.json)"));
     return !path.isEmpty() && saveTo(path);
 }
 
@@ -199,7 +201,7 @@ QString ExperimentDocument::userPresetDirectory() {
 QStringList ExperimentDocument::userPresetFiles() {
     QStringList files;
     const QDir dir(userPresetDirectory());
-    for (const QString& name : dir.entryList({"*.json"}, QDir::Files, QDir::Name))
+    for (const QString& name : dir.entryList({"*.particlelab", "*.json"}, QDir::Files, QDir::Name))
         files << dir.filePath(name);
     return files;
 }

@@ -52,9 +52,9 @@ void MainWindow::createActions() {
     if (!newMenu->actions().isEmpty()) newMenu->actions().front()->setShortcut(QKeySequence::New);
     connect(menuAction(file, tr("&Open preset…"), QKeySequence::Open, tr("Open a preset file")),
             &QAction::triggered, this, [this] {
-                const QString path = QFileDialog::getOpenFileName(this, tr("Open preset"),
-                                                                  ExperimentDocument::userPresetDirectory(),
-                                                                  tr("Presets and snapshots (*.json)"));
+                const QString path = QFileDialog::getOpenFileName(
+                    this, tr("Open preset"), ExperimentDocument::userPresetDirectory(),
+                    tr("Experiments and snapshots (*.particlelab *.plsnap *.json)"));
                 if (!path.isEmpty()) document_->open(path);
             });
     recentMenu_ = file->addMenu(tr("Open &recent"));
@@ -68,11 +68,10 @@ void MainWindow::createActions() {
                        tr("Save the experiment with every particle, to continue exactly where it is")),
             &QAction::triggered, this, [this] {
                 QDir().mkpath(ExperimentDocument::userPresetDirectory());
-                const QString path =
-                    QFileDialog::getSaveFileName(this, tr("Save snapshot"),
-                                                 QDir(ExperimentDocument::userPresetDirectory())
-                                                     .filePath(document_->title() + "-snapshot.json"),
-                                                 tr("Snapshots (*.json)"));
+                const QString path = QFileDialog::getSaveFileName(
+                    this, tr("Save snapshot"),
+                    QDir(ExperimentDocument::userPresetDirectory()).filePath(document_->title() + ".plsnap"),
+                    tr("Snapshots (*.plsnap *.json)"));
                 if (!path.isEmpty()) document_->saveSnapshotTo(path);
             });
     file->addSeparator();

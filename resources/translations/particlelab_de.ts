@@ -1739,8 +1739,8 @@ Wirkt nach „Zurücksetzen“.</translation>
         <translation>Vorlage speichern</translation>
     </message>
     <message>
-        <source>Presets (*.json)</source>
-        <translation>Vorlagen (*.json)</translation>
+        <source>Experiments (*.particlelab);;Presets (*.json)</source>
+        <translation>Experimente (*.particlelab);;Vorlagen (*.json)</translation>
     </message>
     <message>
         <source>Cannot save preset</source>
@@ -2467,8 +2467,8 @@ Wirkt nach „Zurücksetzen“.</translation>
         <translation>Den Kolben mit der Kolbengeschwindigkeit nach rechts bewegen; erneut, um ihn anzuhalten</translation>
     </message>
     <message>
-        <source>Presets and snapshots (*.json)</source>
-        <translation>Vorlagen und Momentaufnahmen (*.json)</translation>
+        <source>Experiments and snapshots (*.particlelab *.plsnap *.json)</source>
+        <translation>Experimente und Momentaufnahmen (*.particlelab *.plsnap *.json)</translation>
     </message>
     <message>
         <source>Save sna&amp;pshot…</source>
@@ -2483,8 +2483,8 @@ Wirkt nach „Zurücksetzen“.</translation>
         <translation>Momentaufnahme speichern</translation>
     </message>
     <message>
-        <source>Snapshots (*.json)</source>
-        <translation>Momentaufnahmen (*.json)</translation>
+        <source>Snapshots (*.plsnap *.json)</source>
+        <translation>Momentaufnahmen (*.plsnap *.json)</translation>
     </message>
     <message>
         <source>%1, read-only: %2 particles, %3 rows up to t = %4, step %5. Open a preset to simulate again.</source>
