@@ -31,7 +31,7 @@ endif()
 
 # AppStream: the component's id is reverse DNS of the project's home; its launcher is particlelab.desktop.
 # The screenshots are the PNGs in docs/screenshots/, served from the project's repository.
-set(PARTICLELAB_APPSTREAM_ID io.github.particlelab.ParticleLab)
+set(PARTICLELAB_APPSTREAM_ID io.github.particlelab.particlelab)
 set(PARTICLELAB_SCREENSHOT_URL "https://raw.githubusercontent.com/particlelab/particlelab/main/docs/screenshots")
 set(metainfo ${CMAKE_CURRENT_BINARY_DIR}/${PARTICLELAB_APPSTREAM_ID}.metainfo.xml)
 configure_file(${desktop_dir}/particlelab.metainfo.xml.in ${metainfo} @ONLY)
