@@ -1,5 +1,5 @@
-// The programs as a package's user meets them: --version with the project's version, the desktop app's
-// --help and --version with no display, a window refused without a display in one sentence, and
+// The programs as a package's user meets them: --version with the project's version; with no display,
+// the desktop app's --help and --version, a methods-lab page, and a window refused in one sentence;
 // experiment (.particlelab) and snapshot (.plsnap) files opened by the CLI and the app.
 #include "CliRunner.h"
 
@@ -93,6 +93,16 @@ private slots:
             QVERIFY2(r.err.startsWith("particlelab: there is no display") && r.err.count('\n') == 1,
                      qPrintable(r.err));
         }
+    }
+
+    // A methods-lab page draws no window: without a display it draws off screen and saves its plot.
+    void labPageNeedsNoDisplay() {
+        QTemporaryDir dir;
+        const QString plot = dir.filePath("echo.png");
+        const CliResult r =
+            runWithEnvironment(PARTICLELAB_GUI, {"--lab", "echo", "--plot", plot}, kDisplayVariables);
+        QVERIFY2(!r.crashed && r.exitCode == 0, qPrintable(r.err));
+        QVERIFY2(QFileInfo(plot).size() > 0, qPrintable(plot));
     }
 
     // The window opens an experiment and a snapshot by their own suffixes, as a file manager hands them
