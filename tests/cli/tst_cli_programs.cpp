@@ -11,11 +11,15 @@ using pl::test::CliResult;
 
 namespace {
 
-// Runs a program in an environment: the display variables removed, others set ("NAME=value").
+// Runs a program in an environment: the display variables removed, others set ("NAME=value"). The
+// app's settings, recent files, presets and autosaves go to a folder of their own, not the user's.
 CliResult runWithEnvironment(const QString& program, const QStringList& args, const QStringList& unset,
                              const QStringList& set = {}) {
     QProcess p;
     QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
+    static const QTemporaryDir home;
+    for (const char* name : {"XDG_CONFIG_HOME", "XDG_DATA_HOME", "XDG_STATE_HOME", "XDG_CACHE_HOME"})
+        environment.insert(name, home.filePath(name));
     for (const QString& name : unset) environment.remove(name);
     for (const QString& entry : set) environment.insert(entry.section('=', 0, 0), entry.section('=', 1));
     p.setProcessEnvironment(environment);
