@@ -108,6 +108,7 @@ cleanup() {
   rm -rf --one-file-system "$root"
 }
 trap cleanup EXIT
+trap 'exit 130' INT TERM # through the EXIT trap
 echo "mirror $mirror${security:+, security $security}; root $root"
 debootstrap --variant=minbase bookworm "$root" "$mirror" >"$out/debootstrap.log" 2>&1 ||
   { tail -n 30 "$out/debootstrap.log"; fail "debootstrap failed"; }
