@@ -7,6 +7,7 @@
 #include "FrameProfile.h"
 #include "MainWindow.h"
 #include "SimulationController.h"
+#include "common/ThreadGovernor.h"
 #include "i18n/Translations.h"
 #include "methods/LabBatch.h"
 #include "present/PresentMode.h"
@@ -59,6 +60,9 @@ void drawFramesRightAfterTheSteps() {
 
 int main(int argc, char** argv) {
     spinOpenMpWorkersBriefly(argv);
+    // The scene steps on the team of threads it measures fastest: one, where another program holds a
+    // core (ThreadGovernor.h).
+    pl::setThreadPolicy(pl::adaptiveUnlessUserFixed());
     drawFramesRightAfterTheSteps();
     // The GPU models' context shares buffers with the viewports (ui/viewport/QtGlContext.h).
     QApplication::setAttribute(Qt::AA_ShareOpenGLContexts);
