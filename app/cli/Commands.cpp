@@ -5,6 +5,7 @@
 
 #include "catalog/ModelCatalog.h"
 #include "common/AtomicFile.h"
+#include "common/ThreadGovernor.h"
 #include "common/TimeSeries.h"
 #include "gas/GasModel.h"
 #include "gas/MethodSweep.h"
@@ -32,8 +33,15 @@ double secondsSince(Clock::time_point start) {
     return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
+// --threads N fixes the team; without it each model's steps run on the team its run measures fastest,
+// up to every core (ThreadGovernor.h): a second thread never makes a run on a busy machine slower.
 void setThreads(int threads) {
-    if (threads > 0) omp_set_num_threads(threads);
+    if (threads > 0) {
+        omp_set_num_threads(threads);
+        setThreadPolicy({false, threads});
+    } else {
+        setThreadPolicy(adaptiveUnlessUserFixed());
+    }
 }
 
 // The model on the asked backend; a backend that cannot be had is reported on stderr, not fatal. A
@@ -349,6 +357,7 @@ int benchmark(const BenchOptions& options) {
     // Warm-up: caches, page faults, the first cell-list allocation.
     for (long long s = 0; s < std::min<long long>(options.steps / 10 + 1, 200); ++s) model->step();
     std::vector<double> seconds;
+    resetThreadStepCounts();
     for (int r = 0; r < options.repeats; ++r) {
         const auto start = Clock::now();
         for (long long s = 0; s < options.steps; ++s) model->step();
@@ -371,7 +380,11 @@ int benchmark(const BenchOptions& options) {
     line["seconds"] = median;
     line["seconds_all"] = seconds;
     line["p_steps_per_s"] = particles * static_cast<double>(options.steps) / median;
-    line["threads"] = omp_get_max_threads();
+    const ThreadPolicy policy = threadPolicy();
+    line["threads"] = policy.adaptive ? policy.most : omp_get_max_threads();
+    line["thread_policy"] = policy.adaptive ? "adaptive" : "fixed";
+    // Adaptive: how many timed steps ran on each team size (index: threads).
+    if (policy.adaptive) line["steps_at_threads"] = threadStepCounts();
     line["backend"] = model->backend();
     std::cout << line.dump() << std::endl;
     return kOk;

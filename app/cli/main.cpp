@@ -4,12 +4,16 @@
 #include "OptionChecks.h"
 #include "ScaleOutCommands.h"
 #include "common/AtomicFile.h"
+#include "common/ThreadGovernor.h"
 
 #include <CLI/CLI.hpp>
 #include <iostream>
 #include <limits>
 
 namespace {
+
+constexpr const char* kThreadsHelp =
+    "OpenMP threads, fixed (default: each step on the team the run measures fastest, up to all cores)";
 
 // The help command of the subcommand being parsed, else of the program.
 std::string helpCommand(const CLI::App& app) {
@@ -21,6 +25,8 @@ std::string helpCommand(const CLI::App& app) {
 
 int main(int argc, char** argv) {
     using namespace pl::cli;
+    // Every subcommand steps on the fastest team it measures; run and bench take --threads to fix it.
+    pl::setThreadPolicy(pl::adaptiveUnlessUserFixed());
     CLI::App app{"ParticleLab headless runner: list presets, run experiments to CSV, benchmark"};
     app.require_subcommand(1);
     app.set_version_flag("--version", std::string("particlelab-cli ") + PARTICLELAB_VERSION,
@@ -44,8 +50,7 @@ int main(int argc, char** argv) {
                        "Override a parameter: key=value (repeatable), in the scene's units");
     runCmd->add_option("--seed", run.seed, "Random seed (default: the preset's)")
         ->transform(wholeNumber(0, std::numeric_limits<long long>::max()));
-    runCmd->add_option("--threads", run.threads, "OpenMP threads (default: all cores)")
-        ->transform(threadCount());
+    runCmd->add_option("--threads", run.threads, kThreadsHelp)->transform(threadCount());
     runCmd
         ->add_option("--every", run.every,
                      "Sample observables every K steps (default: every step of a preset with a run "
@@ -91,7 +96,7 @@ int main(int argc, char** argv) {
         ->transform(wholeNumber(1, kMaxSteps));
     benchCmd->add_option("--set", bench.sets,
                          "Override a parameter: key=value (repeatable), in the scene's units");
-    benchCmd->add_option("--threads", bench.threads, "OpenMP threads")->transform(threadCount());
+    benchCmd->add_option("--threads", bench.threads, kThreadsHelp)->transform(threadCount());
     benchCmd->add_option("--backend", bench.backend, "cpu, gl or auto")
         ->check(CLI::IsMember({"cpu", "gl", "auto"}));
     benchCmd->add_option("--repeats", bench.repeats, "Timed repeats; the median is reported")

@@ -8,6 +8,7 @@
 #include "FrameProfile.h"
 #include "MainWindow.h"
 #include "SimulationController.h"
+#include "common/ThreadGovernor.h"
 #include "i18n/Translations.h"
 #include "methods/LabBatch.h"
 #include "present/PresentMode.h"
@@ -145,6 +146,9 @@ std::optional<int> answerWithoutDisplay(int argc, char** argv) {
 int main(int argc, char** argv) {
     spinOpenMpWorkersBriefly(argv);
     if (const std::optional<int> exitCode = answerWithoutDisplay(argc, argv)) return *exitCode;
+    // The scene steps on the team of threads it measures fastest: one, where another program holds a
+    // core (ThreadGovernor.h).
+    pl::setThreadPolicy(pl::adaptiveUnlessUserFixed());
     drawFramesRightAfterTheSteps();
     // The GPU models' context shares buffers with the viewports (ui/viewport/QtGlContext.h).
     QApplication::setAttribute(Qt::AA_ShareOpenGLContexts);

@@ -8,6 +8,7 @@
 #include "KinematicDrive.h"
 #include "Model.h"
 #include "Obstacle.h"
+#include "ThreadGovernor.h"
 
 #include <algorithm>
 #include <cstdint>
@@ -99,12 +100,15 @@ public:
     }
 
     // One step of dt in the direction of time, the same for every model, CPU and GPU: refused once the
-    // model failed; the model's advance(h); the clock, unless advance() refused the step (it failed
-    // before changing the state); then what follows a step (afterStep(): health checks, limits).
+    // model failed; the model's advance(h) on the team of threads the policy gives (ThreadGovernor.h);
+    // the clock, unless advance() refused the step (it failed before changing the state); then what
+    // follows a step (afterStep(): health checks, limits).
     void step() final {
         if (failure_) return;
         const double h = signedStep();
+        stepThreads_.beginStep(backend() == "cpu");
         advance(h);
+        stepThreads_.endStep();
         if (failure_) return;
         ++step_;
         time_ += h;
@@ -175,6 +179,7 @@ private:
     double time_ = 0.0;
     std::optional<ModelFailure> failure_;
     int timeDirection_ = 1;
+    StepThreads stepThreads_;
 };
 
 // A scene of particles in a world rectangle with draggable obstacles. State: structure of arrays with
