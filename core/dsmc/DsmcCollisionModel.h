@@ -11,8 +11,8 @@
 namespace pl {
 
 struct CollisionModel {
-    enum class Kind { Seed, HardSphere, Vhs, Maxwell };
-    Kind kind = Kind::Seed;
+    enum class Kind { InverseRoot, HardSphere, Vhs, Maxwell };
+    Kind kind = Kind::InverseRoot;
     double prefactor = 1e-18; // A [m^(2ω+1) s^(2ω−2)]
     double omega = 0.75;
 
@@ -26,7 +26,7 @@ struct CollisionModel {
     // σ c_r [m³/s]. The common exponents get exact fast paths; pow only for a general VHS ω.
     double sigmaCr(double cr) const {
         switch (kind) {
-        case Kind::Seed:
+        case Kind::InverseRoot:
             return prefactor * std::sqrt(cr);
         case Kind::HardSphere:
             return prefactor * cr;

@@ -102,7 +102,7 @@ const std::vector<ParamField<DsmcParams>>& DsmcParams::fields() {
 }
 
 const ChoiceTable<DsmcCrossSection>& choiceTable(DsmcCrossSection) {
-    static const ChoiceTable<DsmcCrossSection> table{{DsmcCrossSection::Seed, "seed"},
+    static const ChoiceTable<DsmcCrossSection> table{{DsmcCrossSection::InverseRoot, "inverse-root"},
                                                      {DsmcCrossSection::HardSphere, "hard-sphere"},
                                                      {DsmcCrossSection::Vhs, "vhs"},
                                                      {DsmcCrossSection::Maxwell, "maxwell"}};

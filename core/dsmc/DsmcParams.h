@@ -10,7 +10,7 @@
 namespace pl {
 
 // σ c_r as a function of c_r: the seed's σ = 1e-18 c_r^-1/2 m², hard spheres, VHS or Maxwell molecules.
-enum class DsmcCrossSection { Seed, HardSphere, Vhs, Maxwell };
+enum class DsmcCrossSection { InverseRoot, HardSphere, Vhs, Maxwell };
 // The initial velocities: the seed's two beams along x, one Maxwellian gas at rest, or the BKW state.
 enum class DsmcInitialState { TwoBeams, Maxwellian, Bkw };
 // The names of each choice as preset files and the command line spell them.
@@ -26,7 +26,7 @@ struct DsmcParams {
     long long runSteps = 500; // the run stops here (as the seed does); 0 runs on
 
     // Collision model: σ c_r as a function of the relative speed c_r
-    DsmcCrossSection crossSection = DsmcCrossSection::Seed;
+    DsmcCrossSection crossSection = DsmcCrossSection::InverseRoot;
     double diameter = 4.07e-10;      // hard-sphere diameter [m]
     double vhsDiameter = 4.07e-10;   // VHS reference diameter d_ref [m] (O2, Bird 1994 App. A)
     double vhsTref = 273.0;          // VHS reference temperature [K]

@@ -17,7 +17,7 @@
 
 namespace pl {
 // Which constants the kernels use (the header comment): the seed's 3D ones, or those normalised in 2D.
-enum class FluidKernelConstants { Seed3d, Normalised2d };
+enum class FluidKernelConstants { Unnormalised3d, Normalised2d };
 } // namespace pl
 
 namespace pl::fluid {
@@ -39,7 +39,7 @@ struct Kernels {
             k.poly6 = 4.0 / (pi * std::pow(h, 8));
             k.spiky = 10.0 / (pi * std::pow(h, 5));
             k.spikyGrad = 30.0 / (pi * std::pow(h, 5));
-        } else { // FluidKernelConstants::Seed3d
+        } else { // FluidKernelConstants::Unnormalised3d
             k.poly6 = 315.0 / (64.0 * pi * std::pow(h, 9));
             k.spiky = 15.0 / (pi * std::pow(h, 6));
             k.spikyGrad = 45.0 / (pi * std::pow(h, 6));

@@ -78,7 +78,7 @@ const std::vector<ParamField<FluidParams>>& FluidParams::fields() {
                                    "Added to the constraint's gradient norm; larger is softer (seed 100).", 0,
                                    1e6, 1, d.epsilon, true));
         f.push_back(bindChoice(&P::kernel, makeChoice("kernel", "Kernel constants", "Solver",
-                                                      "seed-3d: poly6 315/(64π h⁹), spiky 45/(π h⁶), as "
+                                                      "3d: poly6 315/(64π h⁹), spiky 45/(π h⁶), as "
                                                       "written (3D constants in 2D); 2d: 4/(π h⁸) and "
                                                       "30/(π h⁵).",
                                                       true)));
@@ -136,7 +136,7 @@ const std::vector<ParamField<FluidParams>>& FluidParams::fields() {
         real(&P::fillY1, makeSpec("fill_y1", "Initial block y₁", "L", "Particles",
                                   "Top edge of the initial block.", 0, 1e5, 1, d.fillY1));
         real(&P::toolSpeed,
-             makeSpec("tool_speed", "Drag speed limit", "× √(g H)", "Tools",
+             makeSpec("tool_speed_factor", "Drag speed limit", "× √(g H)", "Tools",
                       "Fastest a dragged obstacle moves, in units of the wave speed √(g H) of a tank-deep "
                       "layer: the fluid always meets a wall of finite speed, whatever the frame rate.",
                       1e-3, 10, 0.05, d.toolSpeed, true));
@@ -157,7 +157,7 @@ double FluidParams::waveSpeed() const {
 }
 
 const ChoiceTable<FluidKernelConstants>& choiceTable(FluidKernelConstants) {
-    static const ChoiceTable<FluidKernelConstants> table{{FluidKernelConstants::Seed3d, "seed-3d"},
+    static const ChoiceTable<FluidKernelConstants> table{{FluidKernelConstants::Unnormalised3d, "3d"},
                                                          {FluidKernelConstants::Normalised2d, "2d"}};
     return table;
 }

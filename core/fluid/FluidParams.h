@@ -31,8 +31,8 @@ struct FluidParams {
     double neighbourFactor = 1.05; // neighbour search radius / h
     double epsilon = 100.0;        // constraint relaxation ε
     FluidKernelConstants kernel =
-        FluidKernelConstants::Seed3d; // 3D constants as written, or normalised in 2D
-    bool selfDensity = false;         // ρ_i includes W(0) (the paper); the seed omits it
+        FluidKernelConstants::Unnormalised3d; // 3D constants as written, or normalised in 2D
+    bool selfDensity = false;                 // ρ_i includes W(0) (the paper); the seed omits it
     FluidRestDensitySource restDensitySource = FluidRestDensitySource::Value; // or ρ of the spawn grid
     double restDensity = 1.0;                                                 // ρ₀
     double scorrK = 0.001, scorrDq = 0.3; // s_corr = −k (W(r) / W(Δq h))ⁿ

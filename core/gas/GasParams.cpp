@@ -130,13 +130,13 @@ std::vector<ParamField<GasParams>> makeFields() {
                                                -5e4, 5e4, 0.01, d.pistonX, true)));
     f.push_back(bindReal(
         &P::pistonSpeed,
-        makeSpec("piston_speed", "Piston speed", "× rms speed", "Walls and fields",
+        makeSpec("piston_speed_factor", "Piston speed", "× rms speed", "Walls and fields",
                  "Speed of Compress and Expand, in units of the initial rms speed: well below 1 the gas "
                  "follows the adiabat T·A = const; near 1 it heats more.",
                  1e-4, 10, 0.01, d.pistonSpeed, true)));
     f.push_back(bindReal(
         &P::toolSpeed,
-        makeSpec("tool_speed", "Drag speed limit", "× rms speed", "Walls and fields",
+        makeSpec("tool_speed_factor", "Drag speed limit", "× rms speed", "Walls and fields",
                  "Fastest a dragged obstacle or the piston moves, in units of the initial rms speed: the "
                  "disks always meet a wall of finite speed, whatever the frame rate.",
                  1e-3, 100, 0.1, d.toolSpeed, true)));

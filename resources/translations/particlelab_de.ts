@@ -805,12 +805,12 @@ Wirkt nach „Zurücksetzen“.</translation>
         <translation>s_corr Δq / h</translation>
     </message>
     <message>
-        <source>seed-3d: poly6 315/(64π h⁹), spiky 45/(π h⁶), as written (3D constants in 2D); 2d: 4/(π h⁸) and 30/(π h⁵).</source>
-        <translation>seed-3d: poly6 315/(64π h⁹), spiky 45/(π h⁶), wie im Original (3D-Konstanten in 2D); 2d: 4/(π h⁸) und 30/(π h⁵).</translation>
+        <source>3d: poly6 315/(64π h⁹), spiky 45/(π h⁶), as written (3D constants in 2D); 2d: 4/(π h⁸) and 30/(π h⁵).</source>
+        <translation>3d: poly6 315/(64π h⁹), spiky 45/(π h⁶), wie im Original (3D-Konstanten in 2D); 2d: 4/(π h⁸) und 30/(π h⁵).</translation>
     </message>
     <message>
-        <source>seed: σ = 1e-18 c_r^-1/2 m² as written; hard-sphere: σ = π d²; vhs: variable hard sphere (d_ref, T_ref, ω); maxwell: σ c_r constant.</source>
-        <translation>seed: σ = 1e-18 c_r^-1/2 m² wie im Original; hard-sphere: σ = π d²; vhs: variable harte Kugel (d_ref, T_ref, ω); maxwell: σ c_r konstant.</translation>
+        <source>inverse-root: σ = 1e-18 c_r^-1/2 m² as written; hard-sphere: σ = π d²; vhs: variable hard sphere (d_ref, T_ref, ω); maxwell: σ c_r constant.</source>
+        <translation>inverse-root: σ = 1e-18 c_r^-1/2 m² wie im Original; hard-sphere: σ = π d²; vhs: variable harte Kugel (d_ref, T_ref, ω); maxwell: σ c_r konstant.</translation>
     </message>
     <message>
         <source>species A</source>
@@ -1477,8 +1477,8 @@ Wirkt nach „Zurücksetzen“.</translation>
         <translation>particles, oder ein gemitteltes Feld als Farbkarte.</translation>
     </message>
     <message>
-        <source>seed: σ = 1e-18 c_r^-1/2 m²; hard-sphere: σ = π d²; vhs: variable hard sphere (d_ref, T_ref, ω); maxwell: σ c_r constant.</source>
-        <translation>seed: σ = 1e-18 c_r^-1/2 m²; hard-sphere: σ = π d²; vhs: variable harte Kugeln (d_ref, T_ref, ω); maxwell: σ c_r konstant.</translation>
+        <source>inverse-root: σ = 1e-18 c_r^-1/2 m²; hard-sphere: σ = π d²; vhs: variable hard sphere (d_ref, T_ref, ω); maxwell: σ c_r constant.</source>
+        <translation>inverse-root: σ = 1e-18 c_r^-1/2 m²; hard-sphere: σ = π d²; vhs: variable harte Kugeln (d_ref, T_ref, ω); maxwell: σ c_r konstant.</translation>
     </message>
     <message>
         <source>simulated molecules</source>

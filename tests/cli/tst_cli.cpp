@@ -195,6 +195,10 @@ private slots:
             << QStringList{"run", "no-such-preset"} << 2 << "neither a built-in preset";
         QTest::newRow("unknown key") << QStringList{"run", "gas-seed", "--set", "stifness=3"} << 2
                                      << "unknown parameter 'stifness'";
+        QTest::newRow("renamed key") << QStringList{"run", "gas-seed", "--set", "tool_speed=3"} << 2
+                                     << "'tool_speed' is called 'tool_speed_factor'";
+        QTest::newRow("renamed choice") << QStringList{"run", "dsmc-bkw", "--set", "cross_section=seed"} << 2
+                                        << "\"seed\" is called \"inverse-root\"";
         QTest::newRow("out of range")
             << QStringList{"run", "gas-seed", "--set", "dt=5"} << 2 << "[-1, 1] except 0 T";
         QTest::newRow("nan") << QStringList{"run", "gas-seed", "--set", "stiffness=nan"} << 2

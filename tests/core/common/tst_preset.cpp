@@ -116,8 +116,8 @@ private slots:
     }
 
     void unsupportedSchema() {
-        const QString m = errorOf(R"({"schema": 3, "model": "gas"})");
-        QVERIFY2(m.contains("schema 3 is not supported"), qPrintable(m));
+        const QString m = errorOf(R"({"schema": 4, "model": "gas"})");
+        QVERIFY2(m.contains("schema 4 is not supported"), qPrintable(m));
     }
 
     void unknownModel() { QVERIFY(errorOf(R"({"schema": 1, "model": "plasma"})").contains("unknown model")); }

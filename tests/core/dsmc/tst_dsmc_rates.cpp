@@ -31,7 +31,7 @@ class TestDsmcRates : public QObject {
 private slots:
     void acceptedCollisionsMatchTheEquilibriumRate_data() {
         QTest::addColumn<QString>("crossSection");
-        QTest::newRow("seed") << "seed";
+        QTest::newRow("inverse-root") << "inverse-root";
         QTest::newRow("hard-sphere") << "hard-sphere";
         QTest::newRow("vhs") << "vhs";
         QTest::newRow("maxwell") << "maxwell";

@@ -46,7 +46,7 @@ private slots:
 
     void seedConstantsAreTheThreeDimensionalOnes() {
         const double h = 1.1;
-        const auto k = fluid::Kernels::make(h, FluidKernelConstants::Seed3d, true);
+        const auto k = fluid::Kernels::make(h, FluidKernelConstants::Unnormalised3d, true);
         const auto poly6 = [&](double r) { return r > 0 ? k.w(r * r) : k.selfWeight(); };
         QVERIFY(std::abs(integrateOverDisc(poly6, h) - 315.0 / (256.0 * h)) < 1e-9);
         QVERIFY(std::abs(integrateOverDisc([&](double r) { return k.wSpiky(r); }, h) - 1.5 / h) < 1e-9);
@@ -54,7 +54,7 @@ private slots:
         const double r = 0.6;
         const double x = (h * h - r * r) / (h * h * h);
         QCOMPARE(k.w(r * r), 315.0 / (64.0 * std::numbers::pi) * x * x * x);
-        QCOMPARE(fluid::Kernels::make(h, FluidKernelConstants::Seed3d, false).selfWeight(), 0.0);
+        QCOMPARE(fluid::Kernels::make(h, FluidKernelConstants::Unnormalised3d, false).selfWeight(), 0.0);
         QCOMPARE(k.w(0.0), 0.0);
         QCOMPARE(k.w(h * h), 0.0);
     }
@@ -62,7 +62,7 @@ private slots:
     void spikyGradientIsTheKernelsDerivative_data() {
         QTest::addColumn<QString>("normalisation");
         QTest::newRow("2d") << "2d";
-        QTest::newRow("seed-3d") << "seed-3d";
+        QTest::newRow("3d") << "3d";
     }
     void spikyGradientIsTheKernelsDerivative() {
         QFETCH(QString, normalisation);
@@ -93,7 +93,7 @@ private slots:
 
     void artificialPressureIsMinusKAtTheReferenceDistance() {
         const double h = 1.1;
-        const auto k = fluid::Kernels::make(h, FluidKernelConstants::Seed3d, false);
+        const auto k = fluid::Kernels::make(h, FluidKernelConstants::Unnormalised3d, false);
         const double dq = 0.3 * h;
         fluid::ArtificialPressure s{0.001, 1.0 / k.w(dq * dq), 4};
         QVERIFY(std::abs(s(k.w(dq * dq)) + 0.001) < 1e-15);

@@ -42,7 +42,7 @@ class TestSpartaDeck : public QObject {
 private slots:
     // Each model's σ c_r through SPARTA's formula equals ours at every relative speed.
     void crossSectionsMapExactly() {
-        for (const char* model : {"seed", "hard-sphere", "vhs", "maxwell"}) {
+        for (const char* model : {"inverse-root", "hard-sphere", "vhs", "maxwell"}) {
             const auto cell = cellFor("dsmc-seed", {{"cross_section", std::string(model)}});
             const auto vss = scaleout::vssParameters(cell->parameters(), cell->collisionModel());
             QCOMPARE(vss.alpha, 1.0);
