@@ -12,17 +12,17 @@ median() { sort -g | awk '{a[NR]=$1} END {print a[int((NR+1)/2)]}'; }
 times=()
 for _ in $(seq "$repeats"); do
   start=$(date +%s.%N)
-  "$cli" run dsmc-seed --quiet --out /tmp/dsmc-seed-series.csv --histogram /tmp/dsmc-seed-hist.csv
+  "$cli" run dsmc-write-up --quiet --out /tmp/dsmc-write-up-series.csv --histogram /tmp/dsmc-write-up-hist.csv
   times+=("$(awk -v a="$start" -v b="$(date +%s.%N)" 'BEGIN {print b - a}')")
 done
-echo "dsmc-seed whole run (500 steps, 2000 particles): median $(printf '%s\n' "${times[@]}" | median) s"
-"$cli" bench dsmc-seed --steps 500 --repeats "$repeats" --threads 1
+echo "dsmc-write-up whole run (500 steps, 2000 particles): median $(printf '%s\n' "${times[@]}" | median) s"
+"$cli" bench dsmc-write-up --steps 500 --repeats "$repeats" --threads 1
 
 # 2. 200 000 particles at the seed's density (F_N scaled down 100×), ν Δt ≈ 0.04.
 big=(--set count_a=100000 --set count_b=100000 --set fn=5e6 --set run_steps=0)
-line=$("$cli" bench dsmc-seed "${big[@]}" --steps 500 --repeats "$repeats" --threads 1)
+line=$("$cli" bench dsmc-write-up "${big[@]}" --steps 500 --repeats "$repeats" --threads 1)
 echo "$line"
-"$cli" run dsmc-seed "${big[@]}" --steps 500 --every 500 --quiet --out /tmp/dsmc-big.csv
+"$cli" run dsmc-write-up "${big[@]}" --steps 500 --every 500 --quiet --out /tmp/dsmc-big.csv
 seconds=$(echo "$line" | sed 's/.*"seconds":\([0-9.e-]*\).*/\1/')
 per_particle=$(tail -1 /tmp/dsmc-big.csv | awk -F, '{print $NF}')
 echo "200k cell: collisions per particle in 500 steps = $per_particle;" \

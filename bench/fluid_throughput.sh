@@ -23,6 +23,6 @@ report() { # name, then the bench arguments
 
 # The seed as written (5 iterations, Δt = 1/20, ε = 100) with a 79.2 × 29.5 block of 2970 particles at
 # 0.8 h: it implodes to the seed's rest density and settles on the floor within the 2000 steps.
-report "fluid-seed, 2970 particles" fluid-seed --set fill_x1=79.2 --set fill_y1=29.5 --steps 2000
+report "fluid-write-up, 2970 particles" fluid-write-up --set fill_x1=79.2 --set fill_y1=29.5 --steps 2000
 # The dam break as the preset runs it: 1250 particles, 300 steps.
 report "fluid-dam-break, 1250 particles" fluid-dam-break --steps 300

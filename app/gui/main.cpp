@@ -26,7 +26,7 @@ namespace {
 // the X server, the compositor. OpenMP workers that spin at a barrier for up to milliseconds before they
 // sleep (libgomp's default, 300 000 spins) starve them, and a worker the scheduler sets aside stalls
 // every step. Spinning 3000 times (tens of µs) still catches the barriers inside a step, then sleeps
-// (BENCHMARKS.md, "App frame rate": gas-seed 59–62 fps against 35 by default on an idle machine, 32
+// (BENCHMARKS.md, "App frame rate": gas-write-up 59–62 fps against 35 by default on an idle machine, 32
 // against 9 beside two busy processes). libgomp reads GOMP_SPINCOUNT and OMP_WAIT_POLICY once, when it
 // loads, before main: unless the user set either, the process starts itself again with the spin count
 // set (same pid, same arguments).
@@ -71,7 +71,7 @@ int main(int argc, char** argv) {
     QCommandLineParser parser;
     parser.setApplicationDescription("ParticleLab: an interactive physics lab of particles");
     parser.addHelpOption();
-    parser.addPositionalArgument("preset", "Built-in preset name or preset file (default: gas-seed)");
+    parser.addPositionalArgument("preset", "Built-in preset name or preset file (default: gas-write-up)");
     const QCommandLineOption screenshot("screenshot",
                                         "Run --frames frames, save the window as a PNG and quit.", "file");
     const QCommandLineOption frames("frames", "Frames to run before --screenshot (default 300).", "count",
@@ -120,7 +120,8 @@ int main(int argc, char** argv) {
             return 2;
         }
     }
-    if (!window.document()->open(args.isEmpty() ? QStringLiteral("gas-seed") : args.first(), true)) return 2;
+    if (!window.document()->open(args.isEmpty() ? QStringLiteral("gas-write-up") : args.first(), true))
+        return 2;
     window.resize(1280, 800);
     window.show();
     if (!parser.isSet(screenshot) && !parser.isSet(measureFps)) window.autosave()->offerRestore();

@@ -200,12 +200,16 @@ std::string renamedValueNote(const std::string& model, const std::string& key, c
 }
 
 const RenamedPreset* renamedPreset(const std::string& name) {
-    // The wind tunnel's presets were named after the method (dsmc-*) before they took the kind's name.
     static constexpr RenamedPreset renamed[] = {
+        // The wind tunnel's presets were named after the method (dsmc-*) before they took the kind's name.
         {"tunnel", "dsmc-cylinder", "tunnel-cylinder"},
         {"tunnel", "dsmc-free-molecular-cylinder", "tunnel-free-molecular-cylinder"},
         {"tunnel", "dsmc-shock-tube", "tunnel-shock-tube"},
         {"tunnel", "dsmc-couette", "tunnel-couette"},
+        // The scenes of the original write-up were named "-seed", a word kept for the random seed.
+        {"gas", "gas-seed", "gas-write-up"},
+        {"dsmc", "dsmc-seed", "dsmc-write-up"},
+        {"fluid", "fluid-seed", "fluid-write-up"},
     };
     for (const RenamedPreset& r : renamed)
         if (name == r.before) return &r;

@@ -25,8 +25,8 @@ std::string renamedKeyNote(const std::string& model, const std::string& key);
 std::string renamedValueNote(const std::string& model, const std::string& key, const std::string& value);
 
 // The built-in preset's new name, for a name it had before (the wind tunnel's "dsmc-cylinder" is
-// "tunnel-cylinder" since the presets carry their kind's name); nullptr for a name never
-// renamed.
+// "tunnel-cylinder" since the presets carry their kind's name, "gas-seed" is "gas-write-up" since "seed"
+// means only the random seed); nullptr for a name never renamed.
 // Preset files and snapshots that name the old preset read as the new one; the CLI and the app accept
 // the old name with a notice (PresetLookup).
 struct RenamedPreset {

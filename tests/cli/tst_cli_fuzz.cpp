@@ -43,7 +43,7 @@ const std::vector<Scene>& scenes() {
          {"count_a=300"},
          {"count_a", "fn", "dt", "cell_volume", "cross_section", "initial", "temperature",
           "velocity_components", "histogram_bins", "sigma_cr_max_init"}},
-        {"dsmc-seed",
+        {"dsmc-write-up",
          "dsmc",
          {"count_a=200", "count_b=200"},
          {"count_b", "drift_a", "drift_b", "mass_amu", "fn", "dt"}},

@@ -104,7 +104,7 @@ private slots:
 
     void draggingEmptySpaceInTheFluidSeedPours() {
         ui::MainWindow window;
-        QVERIFY(window.openPreset("fluid-seed"));
+        QVERIFY(window.openPreset("fluid-write-up"));
         window.resize(1280, 800);
         window.show();
         QVERIFY(QTest::qWaitForWindowExposed(&window));

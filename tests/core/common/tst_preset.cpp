@@ -40,14 +40,14 @@ private slots:
             QVERIFY2(!p.preset.description.empty(), p.name.c_str());
             auto model = instantiate(p.preset);
             // Every preset starts with particles but the fluid seed's tank, which waits to be poured.
-            QVERIFY2(model->particleCount() > 0 || p.name == "fluid-seed", p.name.c_str());
+            QVERIFY2(model->particleCount() > 0 || p.name == "fluid-write-up", p.name.c_str());
         }
-        for (const char* required : {"gas-seed", "gas-classroom", "gas-mixture"})
+        for (const char* required : {"gas-write-up", "gas-classroom", "gas-mixture"})
             QVERIFY(names.contains(required));
     }
 
     void seedPresetIsTheSeed() {
-        const Preset p = loadPreset("gas-seed");
+        const Preset p = loadPreset("gas-write-up");
         auto model = instantiate(p);
         const auto& md = static_cast<const GasModel&>(*model).parameters();
         QCOMPARE(md.totalCount(), 4096LL);

@@ -287,30 +287,35 @@ private slots:
         QCOMPARE(key, std::string("params.gravity"));
     }
 
-    // The wind tunnel's presets took the kind's name: the old names load the same preset, from the
-    // command line (with a notice) and from a file or snapshot that names them.
-    void renamedTunnelPresetsStillLoad() {
-        for (const char* old :
-             {"dsmc-cylinder", "dsmc-free-molecular-cylinder", "dsmc-shock-tube", "dsmc-couette"}) {
+    // The wind tunnel's presets took the kind's name, and the write-up's scenes lost the word "seed": the
+    // old names load the same preset, from the command line (with a notice) and from a file or snapshot
+    // that names them.
+    void renamedPresetsStillLoad() {
+        for (const char* old : {"dsmc-cylinder", "dsmc-free-molecular-cylinder", "dsmc-shock-tube",
+                                "dsmc-couette", "gas-seed", "dsmc-seed", "fluid-seed"}) {
             const RenamedPreset* renamed = renamedPreset(old);
             QVERIFY2(renamed, old);
             const Preset now = loadPreset(renamed->now);
             const Preset before = loadPreset(old);
             QCOMPARE(before.name, std::string(renamed->now));
-            QCOMPARE(before.model, std::string("tunnel"));
+            QCOMPARE(before.model, std::string(renamed->kind));
+            QCOMPARE(now.model, std::string(renamed->kind));
             QVERIFY(before.params == now.params);
             QVERIFY(!isSnapshotFile(old));
             const std::string notice = presetRenameNotice(old);
             QVERIFY2(notice.find(renamed->now) != std::string::npos, notice.c_str());
             QVERIFY(presetRenameNotice(renamed->now).empty());
         }
-        QVERIFY(renamedPreset("dsmc-seed") == nullptr); // the DSMC cell's presets keep their names
+        QVERIFY(renamedPreset("dsmc-bkw") == nullptr); // the other presets keep their names
         const Preset file =
             parsePreset(R"({"schema": 2, "model": "tunnel", "name": "dsmc-couette"})", specsForModel, "file");
         QCOMPARE(file.name, std::string("tunnel-couette"));
         const Preset gas =
             parsePreset(R"({"schema": 2, "model": "gas", "name": "dsmc-couette"})", specsForModel, "file");
         QCOMPARE(gas.name, std::string("dsmc-couette")); // a user's own name for another kind stays
+        const Preset writeUp =
+            parsePreset(R"({"schema": 3, "model": "dsmc", "name": "dsmc-seed"})", specsForModel, "file");
+        QCOMPARE(writeUp.name, std::string("dsmc-write-up"));
     }
 
     void unknownSchemasAreRefused() {

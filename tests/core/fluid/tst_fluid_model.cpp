@@ -261,7 +261,7 @@ private slots:
 
     void seedPresetIsTheSeed() {
         FluidModel model;
-        model.reset(loadPreset("fluid-seed"));
+        model.reset(loadPreset("fluid-write-up"));
         QCOMPARE(model.particleCount(), std::size_t(0));
         QCOMPARE(model.restDensity(), 1.0);
         const SceneView view = model.sceneView();

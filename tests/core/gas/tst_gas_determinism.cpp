@@ -31,7 +31,7 @@ private slots:
     void bitIdenticalAcrossThreadCounts_data() {
         QTest::addColumn<QString>("preset");
         QTest::addColumn<QString>("integrator");
-        QTest::newRow("seed, verlet") << "gas-seed"
+        QTest::newRow("seed, verlet") << "gas-write-up"
                                       << "velocity-verlet";
         QTest::newRow("mixture, rk4") << "gas-mixture"
                                       << "rk4";
