@@ -1,7 +1,7 @@
 // The interchangeable piece of the NTC method: σ c_r as a function of the relative speed. Every model
 // here is a power law σ c_r = A c_r^(2 − 2ω) (docs/dsmc.md#cross-sections-and-collision-frequency): the
-// seed's σ = 1e-18 c_r^-1/2 is ω = 3/4, hard spheres ω = 1/2, Maxwell molecules ω = 1, and VHS any ω with A
-// from (d_ref, T_ref).
+// write-up's σ = 1e-18 c_r^-1/2 (inverse-root) is ω = 3/4, hard spheres ω = 1/2, Maxwell molecules ω = 1, and
+// VHS any ω with A from (d_ref, T_ref).
 #pragma once
 
 #include "DsmcParams.h"

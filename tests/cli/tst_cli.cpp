@@ -116,7 +116,7 @@ private slots:
         const auto r = cli({"run", "dsmc-write-up", "--out", series, "--histogram", hist, "--quiet"});
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
         const QStringList rows = readLines(series);
-        QCOMPARE(rows.size(), 1 + 501); // the seed's 500 steps, every one sampled, plus the start
+        QCOMPARE(rows.size(), 1 + 501); // the write-up's 500 steps, every one sampled, plus the start
         const QStringList header = rows[0].split(',');
         for (const char* column : {"step", "time", "particles", "Tx", "Ty", "Tz", "T", "ux", "kurtosis_vx",
                                    "ng", "nc", "sigma_cr_max", "M4", "M6", "M8"})
@@ -126,7 +126,8 @@ private slots:
         QVERIFY(std::abs(last[header.indexOf("T")].toDouble() - 17.83) < 0.005);
         QVERIFY(std::abs(last[header.indexOf("ux")].toDouble() - 200.0) < 1e-9);
         const QStringList bins = readLines(hist);
-        QCOMPARE(bins.filter(QRegularExpression("^speed,")).size(), 25); // the seed's 0–450 m/s in 25 bins
+        QCOMPARE(bins.filter(QRegularExpression("^speed,")).size(),
+                 25); // the write-up's 0–450 m/s in 25 bins
         QCOMPARE(bins.filter(QRegularExpression("^vx,")).size(), 50);
     }
 
@@ -169,7 +170,7 @@ private slots:
         QCOMPARE(readLines(init).size(), 4097);
         QCOMPARE(readLines(fin)[0], QString("id,species,x,y,vx,vy"));
         QVERIFY(readLines(hist)[1].startsWith("speed_a,0,"));
-        // The initial dump is the seed's start: speed 1 everywhere.
+        // The initial dump is the write-up's start: speed 1 everywhere.
         const QStringList first = readLines(init)[1].split(',');
         QVERIFY(std::abs(std::hypot(first[4].toDouble(), first[5].toDouble()) - 1.0) < 1e-12);
     }

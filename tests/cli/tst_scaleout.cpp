@@ -259,7 +259,7 @@ private slots:
         QVERIFY(std::isnan(cell(imported, 1, "pressure_wall")));
     }
 
-    // The seed's soft disks: LAMMPS and our gas agree to round-off over 1000 steps, on 1 and 2 ranks.
+    // The write-up's soft disks: LAMMPS and our gas agree to round-off over 1000 steps, on 1 and 2 ranks.
     void lammpsAgreesWithTheSeedGas() {
         if (!haveLammps()) QSKIP("lmp or mpirun not installed (.ci/install-deps.sh installs them)");
         QTemporaryDir dir;

@@ -103,7 +103,7 @@ private slots:
             window.show();
             QVERIFY(QTest::qWaitForWindowExposed(&window));
             Model* model = window.controller()->model();
-            if (model->particleCount() == 0) // the fluid seed's empty tank: pour a block as a user would
+            if (model->particleCount() == 0) // the fluid write-up's empty tank: pour a block as a user would
                 QVERIFY(model->tools()->spawnInRectangle(10, 2, 40, 12).starts_with("added"));
             runFrames(window, 30);
             QVERIFY(window.controller()->model()->stepCount() > 0);
@@ -115,7 +115,7 @@ private slots:
                 if (!plot->spec().kinds.contains(QString::fromStdString(builtin.preset.model))) continue;
                 raiseDockOf(window, plot); // tabbed-away plots refresh when they are shown
                 QVERIFY(plot->plot()->graphCount() >= 2);
-                // The seed's tank has no dam-break column, so its front plot has nothing to show.
+                // The write-up's tank has no dam-break column, so its front plot has nothing to show.
                 if (name == "fluid-write-up" && plot->spec().objectName == "frontPlot") continue;
                 int filled = 0; // graphs with 10 samples, or a profile of all 5 iterations and the result
                 for (int g = 0; g < plot->plot()->graphCount(); ++g)

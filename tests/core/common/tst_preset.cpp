@@ -39,14 +39,14 @@ private slots:
             names << QString::fromStdString(p.name);
             QVERIFY2(!p.preset.description.empty(), p.name.c_str());
             auto model = instantiate(p.preset);
-            // Every preset starts with particles but the fluid seed's tank, which waits to be poured.
+            // Every preset starts with particles but the fluid write-up's tank, which waits to be poured.
             QVERIFY2(model->particleCount() > 0 || p.name == "fluid-write-up", p.name.c_str());
         }
         for (const char* required : {"gas-write-up", "gas-classroom", "gas-mixture"})
             QVERIFY(names.contains(required));
     }
 
-    void seedPresetIsTheSeed() {
+    void writeUpPresetIsTheWriteUp() {
         const Preset p = loadPreset("gas-write-up");
         auto model = instantiate(p);
         const auto& md = static_cast<const GasModel&>(*model).parameters();

@@ -102,7 +102,9 @@ private slots:
         const Preset twin = twinOf(stem.toStdString());
         QCOMPARE(old.model, twin.model);
         QCOMPARE(old.name, twin.name);
-        QCOMPARE(old.description, twin.description);
+        // A built-in's description is prose that may be reworded since (the write-up's presets were); a
+        // saved preset's is the user's and stays.
+        if (stem.startsWith("user-")) QCOMPARE(old.description, twin.description);
         QCOMPARE(old.seed, twin.seed);
         QVERIFY2(firstDifference(old.params, twin.params).empty(),
                  firstDifference(old.params, twin.params).c_str());

@@ -1,5 +1,5 @@
 // One DSMC collision conserves momentum and energy to round-off and scatters isotropically; a whole run
-// conserves them too, and the seed run ends at 17.83 K with mean velocity 200 m/s. The molecule's
+// conserves them too, and the write-up run ends at 17.83 K with mean velocity 200 m/s. The molecule's
 // parameters are one table for the cell and the wind tunnel.
 #include "catalog/ModelCatalog.h"
 #include "common/Philox.h"

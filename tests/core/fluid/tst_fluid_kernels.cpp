@@ -1,5 +1,5 @@
 // The PBF kernels (docs/fluid.md#kernel-normalisation): the 2D constants integrate to 1 over the plane, the
-// seed's 3D ones to 315/(256 h) and 3/(2 h); the spiky gradient is the derivative of the spiky kernel and
+// write-up's 3D ones to 315/(256 h) and 3/(2 h); the spiky gradient is the derivative of the spiky kernel and
 // antisymmetric in the pair; s_corr is −k at r = Δq h.
 #include "fluid/FluidKernels.h"
 #include "fluid/FluidParams.h"
@@ -31,14 +31,14 @@ class TestFluidKernels : public QObject {
 private slots:
     void twoDimensionalConstantsIntegrateToOne_data() {
         QTest::addColumn<double>("h");
-        QTest::newRow("seed h") << 1.1;
+        QTest::newRow("write-up h") << 1.1;
         QTest::newRow("small") << 0.25;
         QTest::newRow("large") << 3.0;
     }
     void twoDimensionalConstantsIntegrateToOne() {
         QFETCH(double, h);
         const auto k = fluid::Kernels::make(h, FluidKernelConstants::Normalised2d, true);
-        // W at r = 0 through the self weight (pairs at r = 0 weigh nothing, as in the seed).
+        // W at r = 0 through the self weight (pairs at r = 0 weigh nothing, as in the write-up).
         const auto poly6 = [&](double r) { return r > 0 ? k.w(r * r) : k.selfWeight(); };
         QVERIFY(std::abs(integrateOverDisc(poly6, h) - 1.0) < 1e-9);
         QVERIFY(std::abs(integrateOverDisc([&](double r) { return k.wSpiky(r); }, h) - 1.0) < 1e-9);
@@ -50,7 +50,7 @@ private slots:
         const auto poly6 = [&](double r) { return r > 0 ? k.w(r * r) : k.selfWeight(); };
         QVERIFY(std::abs(integrateOverDisc(poly6, h) - 315.0 / (256.0 * h)) < 1e-9);
         QVERIFY(std::abs(integrateOverDisc([&](double r) { return k.wSpiky(r); }, h) - 1.5 / h) < 1e-9);
-        // The seed's code: poly6Value(r) = 315/(64π) ((h² − r²)/h³)³.
+        // The write-up's code: poly6Value(r) = 315/(64π) ((h² − r²)/h³)³.
         const double r = 0.6;
         const double x = (h * h - r * r) / (h * h * h);
         QCOMPARE(k.w(r * r), 315.0 / (64.0 * std::numbers::pi) * x * x * x);

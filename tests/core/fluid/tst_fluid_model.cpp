@@ -259,7 +259,7 @@ private slots:
         QVERIFY(positions[0] == positions[1]);
     }
 
-    void seedPresetIsTheSeed() {
+    void writeUpPresetIsTheWriteUp() {
         FluidModel model;
         model.reset(loadPreset("fluid-write-up"));
         QCOMPARE(model.particleCount(), std::size_t(0));

@@ -52,7 +52,7 @@ private slots:
                 QVERIFY2(std::abs(theirs - ours) <= 1e-12 * ours, model);
             }
         }
-        // The seed's σ = 1e-18 c_r^-½ is VHS with ω = 3/4 and d_ref = 1.1259e-10 m at T_ref = 273 K (O2).
+        // The write-up's σ = 1e-18 c_r^-½ is VHS with ω = 3/4 and d_ref = 1.1259e-10 m at T_ref = 273 K (O2).
         const auto seed = cellFor("dsmc-write-up");
         const auto vss = scaleout::vssParameters(seed->parameters(), seed->collisionModel());
         QCOMPARE(vss.omega, 0.75);
