@@ -9,7 +9,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 rounds=${1:-3}
 seconds=${2:-6}
-presets=${3:-gas-seed gas-classroom fluid-obstacle fluid-dam-break}
+presets=${3:-gas-write-up gas-classroom fluid-obstacle fluid-dam-break}
 shift $(($# < 3 ? $# : 3))
 binaries=("$@")
 [ ${#binaries[@]} -gt 0 ] || binaries=(build/app/particlelab)

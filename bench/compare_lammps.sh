@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Runs gas-seed (4096 disks) and a 262 144-disk gas at the same area fraction in ParticleLab (1 and 2
+# Runs gas-write-up (4096 disks) and a 262 144-disk gas at the same area fraction in ParticleLab (1 and 2
 # threads) and in Debian's LAMMPS (mpirun -np 2), from the identical initial state, and prints
 # particle-steps per second and their ratio (medians of REPEATS runs) as a Markdown table.
 # Usage: bench/compare_lammps.sh [REPEATS]   (after .ci/build.sh; installs lammps if missing)
@@ -31,7 +31,7 @@ median() { sort -g | awk '{ v[NR] = $1 } END { print v[int((NR + 1) / 2)] }'; }
 run_case() {
   local name=$1 n=$2 half=$3 steps=$4
   local sets=(--set count_a=$n --set box_width=$((2 * half)) --set box_height=$((2 * half)))
-  "$cli" run gas-seed "${sets[@]}" --steps 0 --quiet --dump-initial "$work/init.csv"
+  "$cli" run gas-write-up "${sets[@]}" --steps 0 --quiet --dump-initial "$work/init.csv"
   awk -F, -v n=$n -v h=$half -v d=$d -v rho="$density" 'NR == 1 { next } { x[NR] = $3; y[NR] = $4; vx[NR] = $5; vy[NR] = $6 }
     END { print "ParticleLab initial state\n"; print n " atoms\n1 atom types\n"; print -h " " h " xlo xhi";
           print -h " " h " ylo yhi"; print "-0.5 0.5 zlo zhi\n\nAtoms # sphere\n";
@@ -41,7 +41,7 @@ run_case() {
 
   if [ "$n" -le 4096 ]; then
     # Same physics first: the kinetic energy after 400 steps from the same state, in both codes.
-    "$cli" run gas-seed "${sets[@]}" --steps 400 --every 400 --quiet --out "$work/ours.csv"
+    "$cli" run gas-write-up "${sets[@]}" --steps 400 --every 400 --quiet --out "$work/ours.csv"
     (cd "$work" && mpirun --allow-run-as-root -np 1 lmp -screen none -in "$OLDPWD/bench/harmonic.lmp" \
        -var data data.lmp -var k $k -var steps 400 -var every 400 -var skin 0.005 -echo none -log check.log >/dev/null)
     ours_ke=$(awk -F, 'END { print $4 }' "$work/ours.csv")
@@ -49,7 +49,7 @@ run_case() {
     echo "kinetic energy after 400 steps ($name): ParticleLab $ours_ke, LAMMPS $lammps_ke" >&2
   fi
   local ours1=() ours2=() base2=() lammps=()
-  rate_of() { "$1" bench gas-seed "${sets[@]}" --steps "$steps" --repeats 1 --threads "$2" | sed 's/.*"p_steps_per_s":\([0-9.e+]*\).*/\1/'; }
+  rate_of() { "$1" bench gas-write-up "${sets[@]}" --steps "$steps" --repeats 1 --threads "$2" | sed 's/.*"p_steps_per_s":\([0-9.e+]*\).*/\1/'; }
   for r in $(seq "$repeats"); do
     ours1+=("$(rate_of "$cli" 1)")
     ours2+=("$(rate_of "$cli" 2)")
@@ -84,5 +84,5 @@ else
   echo "| system | steps | ParticleLab 1 thread | ParticleLab 2 threads | LAMMPS mpirun -np 2 | ratio (2 threads / LAMMPS) | baseline 2 threads | baseline ratio |"
   echo "|---|---|---|---|---|---|---|---|"
 fi
-run_case "gas-seed, 4096 disks" 4096 1 2000
+run_case "gas-write-up, 4096 disks" 4096 1 2000
 run_case "262144 disks, same area fraction" 262144 8 200

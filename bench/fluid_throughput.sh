@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Fluid throughput: the seed's tank filled to its 3000-particle cap, and the dam break, in steps/s and
+# Fluid throughput: the write-up's tank filled to its 3000-particle cap, and the dam break, in steps/s and
 # particle-steps/s at 1 and 2 threads (median of the repeats). Usage: bench/fluid_throughput.sh [repeats]
 # (from a built tree). CLI=path runs another build (a copy kept from before a change, say) through the
 # same script, so before and after can be run alternately in one session on a shared machine.
@@ -21,8 +21,8 @@ report() { # name, then the bench arguments
   done
 }
 
-# The seed as written (5 iterations, Δt = 1/20, ε = 100) with a 79.2 × 29.5 block of 2970 particles at
-# 0.8 h: it implodes to the seed's rest density and settles on the floor within the 2000 steps.
-report "fluid-seed, 2970 particles" fluid-seed --set fill_x1=79.2 --set fill_y1=29.5 --steps 2000
+# The write-up as written (5 iterations, Δt = 1/20, ε = 100) with a 79.2 × 29.5 block of 2970 particles at
+# 0.8 h: it implodes to the write-up's rest density and settles on the floor within the 2000 steps.
+report "fluid-write-up, 2970 particles" fluid-write-up --set fill_x1=79.2 --set fill_y1=29.5 --steps 2000
 # The dam break as the preset runs it: 1250 particles, 300 steps.
 report "fluid-dam-break, 1250 particles" fluid-dam-break --steps 300

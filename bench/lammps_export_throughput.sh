@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Throughput of an exported gas: `particlelab-cli export lammps` writes a 262 144-disk gas at gas-seed's
+# Throughput of an exported gas: `particlelab-cli export lammps` writes a 262 144-disk gas at gas-write-up's
 # area fraction (box [−8, 8]²), LAMMPS runs the deck on 1 and 2 MPI ranks, and ParticleLab's CPU model
 # runs the same gas on 1 and 2 threads. Prints particle-steps per second (medians of REPEATS runs) as
 # a Markdown table row. Usage: bench/lammps_export_throughput.sh [REPEATS] [STEPS]  (after .ci/build.sh)
@@ -16,7 +16,7 @@ trap 'rm -rf "$work"' EXIT
 n=262144
 sets=(--set count_a=$n --set box_width=16 --set box_height=16)
 # Thermo and dumps only at the start: the timed loop is the dynamics alone, as in `bench`.
-"$cli" export lammps gas-seed "${sets[@]}" --steps "$steps" --every 1000000000 --out "$work" --quiet
+"$cli" export lammps gas-write-up "${sets[@]}" --steps "$steps" --every 1000000000 --out "$work" --quiet
 
 median() { sort -g | awk '{ v[NR] = $1 } END { print v[int((NR + 1) / 2)] }'; }
 lammps_rate() { # ranks
@@ -24,7 +24,7 @@ lammps_rate() { # ranks
   awk -v n=$n -v s="$steps" '/^Loop time/ { printf "%.6g\n", n * s / $4 }' "$work/timing.log"
 }
 ours_rate() { # threads
-  "$cli" bench gas-seed "${sets[@]}" --steps "$steps" --repeats 1 --threads "$1" --backend cpu |
+  "$cli" bench gas-write-up "${sets[@]}" --steps "$steps" --repeats 1 --threads "$1" --backend cpu |
     sed 's/.*"p_steps_per_s":\([0-9.e+]*\).*/\1/'
 }
 l1=() l2=() o1=() o2=()

@@ -2,7 +2,7 @@
 # Soak: each scene for many steps in one process, reporting its resident memory early and at the end
 # (flat means nothing accumulates) and how far its energy moved. Usage (from a built tree):
 #   bench/soak.sh [steps] [fluid-steps]     (defaults 1000000 and 100000: the fluid steps at ~700/s)
-#   SCENES="dsmc-seed fluid-dam-break" bench/soak.sh   (a subset of the four scenes)
+#   SCENES="dsmc-write-up fluid-dam-break" bench/soak.sh   (a subset of the four scenes)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 cli=${CLI:-build/app/particlelab-cli}
@@ -36,7 +36,7 @@ soak() { # name, energy column, CLI arguments…
 }
 
 every=$((steps / 100))
-scenes=${SCENES:-gas-classroom gas-seed dsmc-seed fluid-dam-break} # a subset: SCENES="dsmc-seed" …
+scenes=${SCENES:-gas-classroom gas-write-up dsmc-write-up fluid-dam-break} # a subset: SCENES="dsmc-write-up" …
 for scene in $scenes; do
   case $scene in
   gas-*) soak "$scene" total "$scene" --steps "$steps" --every "$every" --threads 2 ;;

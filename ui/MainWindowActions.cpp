@@ -253,7 +253,7 @@ void MainWindow::createToolPalette() {
         connect(action, &QAction::triggered, this,
                 [this, tool = entry.tool] { viewportCore_->setTool(tool); });
     }
-    // The gravity switch (the fluid seed's toggle): every scene with gravity has it as "gravity_on".
+    // The gravity switch (the fluid write-up's toggle): every scene with gravity has it as "gravity_on".
     gravity_ = menuAction(menu, tr("Gravity"), Qt::Key_G, tr("Switch gravity on or off"));
     gravity_->setObjectName("gravityAction");
     gravity_->setCheckable(true);

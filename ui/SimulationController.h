@@ -20,7 +20,7 @@ class SimulationController : public QObject {
     Q_OBJECT
 public:
     explicit SimulationController(QObject* parent = nullptr);
-    // The seed's speed slider went to 10; 20 lets a slow machine keep up with a fast one's model time.
+    // The write-up's speed slider went to 10; 20 lets a slow machine keep up with a fast one's model time.
     static constexpr int kMaxStepsPerFrame = 20;
 
     // Loads a preset, and with a snapshot's state continues from it. On error the current experiment is

@@ -5,6 +5,7 @@
 
 #include "catalog/ModelCatalog.h"
 #include "common/AtomicFile.h"
+#include "common/PresetMigration.h"
 #include "common/ThreadGovernor.h"
 #include "common/TimeSeries.h"
 #include "gas/GasModel.h"
@@ -123,10 +124,18 @@ void applySets(Preset& preset, const std::vector<std::string>& sets) {
             throw PresetError("", "--set expects key=value, got \"" + assignment + "\"");
         const std::string key = assignment.substr(0, eq);
         const ParamSpec* spec = findSpec(*specs, key);
-        if (!spec) throw PresetError(key, "--set: unknown parameter '" + key + "' for model " + preset.model);
+        if (!spec) {
+            const std::string renamed = renamedKeyNote(preset.model, key);
+            throw PresetError(key, "--set: unknown parameter '" + key + "' for model " + preset.model +
+                                       (renamed.empty() ? "" : "; " + renamed));
+        }
         ParamValue value = parseValue(*spec, assignment.substr(eq + 1));
-        if (auto problem = checkValue(*spec, value); !problem.empty())
+        if (auto problem = checkValue(*spec, value); !problem.empty()) {
+            if (const auto* s = std::get_if<std::string>(&value); s && spec->kind == ParamKind::Choice)
+                if (const std::string renamed = renamedValueNote(preset.model, key, *s); !renamed.empty())
+                    problem += "; " + renamed;
             throw PresetError(key, "--set: " + problem);
+        }
         preset.params[key] = std::move(value);
     }
 }

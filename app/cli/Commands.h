@@ -26,7 +26,7 @@ struct RunOptions {
     int threads = 0;                // 0: OpenMP's default
     std::optional<long long> steps; // default: the preset's run length (DSMC), else 1000
     std::optional<long long> every; // sample observables every this many steps; default: 1 for a run with
-                                    // a planned length (as the DSMC seed prints every step), else 100
+                                    // a planned length (as the DSMC write-up prints every step), else 100
     std::string out, histogram, dumpInitial, dumpFinal;
     std::string fields;           // sampled fields at the end (a scene with SampledFields: the wind tunnel)
     std::string surface;          // step,time,drag,lift per sample (the wind tunnel's body forces)

@@ -30,7 +30,7 @@ namespace {
 // the X server, the compositor. OpenMP workers that spin at a barrier for up to milliseconds before they
 // sleep (libgomp's default, 300 000 spins) starve them, and a worker the scheduler sets aside stalls
 // every step. Spinning 3000 times (tens of µs) still catches the barriers inside a step, then sleeps
-// (BENCHMARKS.md, "App frame rate": gas-seed 59–62 fps against 35 by default on an idle machine, 32
+// (BENCHMARKS.md, "App frame rate": gas-write-up 59–62 fps against 35 by default on an idle machine, 32
 // against 9 beside two busy processes). libgomp reads GOMP_SPINCOUNT and OMP_WAIT_POLICY once, when it
 // loads, before main: unless the user set either, the process starts itself again with the spin count
 // set (same pid, same arguments).
@@ -87,7 +87,7 @@ struct CommandLine {
         parser.addPositionalArgument(
             "preset",
             "Built-in preset name, experiment (.particlelab, .json) or snapshot (.plsnap) file "
-            "(default: gas-seed)",
+            "(default: gas-write-up)",
             "[preset]");
         for (const QCommandLineOption* option :
              {&lab, &plotFile, &csvFile, &backend, &screenshot, &frames, &measureFps, &present})
@@ -185,7 +185,8 @@ int main(int argc, char** argv) {
             return 2;
         }
     }
-    if (!window.document()->open(args.isEmpty() ? QStringLiteral("gas-seed") : args.first(), true)) return 2;
+    if (!window.document()->open(args.isEmpty() ? QStringLiteral("gas-write-up") : args.first(), true))
+        return 2;
     window.resize(1280, 800);
     window.show();
     if (!parser.isSet(options.screenshot) && !parser.isSet(options.measureFps))

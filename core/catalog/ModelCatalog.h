@@ -33,7 +33,7 @@ std::unique_ptr<Model> createModel(const std::string& kind);
 std::size_t particleCount(const Preset& preset);
 
 struct BuiltinPreset {
-    std::string name;   // file stem, e.g. "gas-seed"
+    std::string name;   // file stem, e.g. "gas-write-up"
     std::string folder; // the folder under resources/presets/ it was read from: its model kind
     Preset preset;
 };

@@ -7,7 +7,7 @@
 namespace pl {
 
 struct EmbeddedFile {
-    std::string_view path; // relative to resources/, e.g. "presets/gas/gas-seed.json"
+    std::string_view path; // relative to resources/, e.g. "presets/gas/gas-write-up.json"
     std::string_view text;
 };
 

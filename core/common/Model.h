@@ -72,7 +72,7 @@ public:
     virtual double time() const = 0;
     virtual std::size_t particleCount() const = 0;
     virtual std::optional<ModelFailure> failure() const = 0;
-    // Steps after which a run is complete (the DSMC seed runs 500); 0: open-ended.
+    // Steps after which a run is complete (the DSMC write-up runs 500); 0: open-ended.
     virtual std::int64_t plannedSteps() const { return 0; }
     // Whether a negative time step runs the dynamics backwards (stochastic collisions cannot).
     virtual bool reversible() const { return true; }

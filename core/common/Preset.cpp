@@ -98,6 +98,11 @@ private:
     std::string duplicate_;
 };
 
+// "; note", or "" without one.
+std::string noteAfter(const std::string& note) {
+    return note.empty() ? note : "; " + note;
+}
+
 std::string jsonTypeName(const Json& v) {
     return v.type_name();
 }
@@ -220,7 +225,7 @@ Preset parsePreset(std::string_view text, const SpecLookup& specsFor, const std:
     if (root.contains("params")) {
         const Json& params = root.at("params");
         if (!params.is_object()) fail(source, "params", "'params' must be an object of key: value");
-        std::map<std::string, std::string> spelledAs; // schema-2 key → the older key the file wrote
+        std::map<std::string, std::string> spelledAs; // newest key → the older key the file wrote
         const Json current =
             migrateParams(preset.model, static_cast<int>(version), params, source, spelledAs);
         for (const auto& [key, value] : current.items()) {
@@ -230,13 +235,16 @@ Preset parsePreset(std::string_view text, const SpecLookup& specsFor, const std:
             if (!spec)
                 fail(source, where,
                      "unknown parameter '" + where + "' for model " + preset.model + " (schema " +
-                         std::to_string(version) + ")");
+                         std::to_string(version) + ")" + noteAfter(renamedKeyNote(preset.model, key)));
             ParamValue v = toParamValue(value);
-            if (auto problem = checkValue(*spec, v); !problem.empty())
+            if (auto problem = checkValue(*spec, v); !problem.empty()) {
+                if (const auto* s = std::get_if<std::string>(&v); s && spec->kind == ParamKind::Choice)
+                    problem += noteAfter(renamedValueNote(preset.model, key, *s));
                 fail(source, where,
                      old == spelledAs.end() ? problem
                                             : "'" + where + "' (schema " + std::to_string(version) +
                                                   ", now '" + key + "'): " + problem);
+            }
             preset.params[key] = std::move(v);
         }
     }

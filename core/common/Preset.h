@@ -14,7 +14,7 @@
 namespace pl {
 
 struct Preset {
-    static constexpr int kSchema = 2;       // written; see docs/presets.md for what changed
+    static constexpr int kSchema = 3;       // written; see docs/presets.md for what changed
     static constexpr int kOldestSchema = 1; // read and migrated to kSchema with the same meaning
     std::string model;                      // "gas", later "dsmc", "fluid"
     std::string name;

@@ -38,7 +38,8 @@ public:
     // Puts the piston at x at rest at once (time stands still).
     virtual void placePiston(double /*x*/) {}
 
-    // The fastest a dragged body moves [L/T] (the scene's tool_speed parameter in model units).
+    // The fastest a dragged body moves [L/T] (the scene's tool_speed, or tool_speed_factor × its scale, in
+    // model units).
     virtual double toolSpeed() const = 0;
     // Whether a body is still on its way to a target (the view keeps drawing it as held).
     virtual bool bodiesMoving() const = 0;

@@ -12,8 +12,8 @@
 namespace pl {
 
 enum class ColourMap {
-    Thermal,  // the gas seed's 10-stop palette, value in [0, 1]
-    BlueRed,  // the fluid seed's blue → red, value in [0, 1]
+    Thermal,  // the gas write-up's 10-stop palette, value in [0, 1]
+    BlueRed,  // the fluid write-up's blue → red, value in [0, 1]
     Category, // value is a small integer: species or beam of origin
 };
 
@@ -57,10 +57,10 @@ struct SceneView {
     std::vector<std::string> categories; // legend entries for ColourMap::Category
 
     std::vector<Obstacle> obstacles;
-    std::optional<double> pistonX;        // a vertical wall from bottom to top at this x
-    std::string hint;                     // faint instruction across the view (e.g. while a tank is empty)
-    bool dragPours = false;               // with the Drag tool, dragging empty space spawns (the fluid seed)
-    std::optional<GpuParticles> gpu;      // set instead of x, y, radius, value by sceneViewSharingGpu()
+    std::optional<double> pistonX;   // a vertical wall from bottom to top at this x
+    std::string hint;                // faint instruction across the view (e.g. while a tank is empty)
+    bool dragPours = false;          // with the Drag tool, dragging empty space spawns (the fluid write-up)
+    std::optional<GpuParticles> gpu; // set instead of x, y, radius, value by sceneViewSharingGpu()
     std::optional<SceneFieldImage> field; // a colour map under the particles (the wind tunnel's fields)
     bool drawParticles = true;            // false while a field hides them
 

@@ -14,8 +14,8 @@ CollisionModel CollisionModel::fromCrossSection(DsmcCrossSection crossSection, d
                                                 double vhsDiameter, double vhsTref, double vhsOmega,
                                                 double maxwellSigmaCr, double massKg) {
     CollisionModel m;
-    if (crossSection == DsmcCrossSection::Seed) {
-        m = {Kind::Seed, 1e-18, 0.75}; // σ = 1e-18 c_r^-1/2 m², as the seed writes it
+    if (crossSection == DsmcCrossSection::InverseRoot) {
+        m = {Kind::InverseRoot, 1e-18, 0.75}; // σ = 1e-18 c_r^-1/2 m², as the write-up writes it
     } else if (crossSection == DsmcCrossSection::HardSphere) {
         m = {Kind::HardSphere, std::numbers::pi * diameter * diameter, 0.5};
     } else if (crossSection == DsmcCrossSection::Maxwell) {

@@ -1,7 +1,7 @@
 // The interchangeable piece of the NTC method: σ c_r as a function of the relative speed. Every model
 // here is a power law σ c_r = A c_r^(2 − 2ω) (docs/dsmc.md#cross-sections-and-collision-frequency): the
-// seed's σ = 1e-18 c_r^-1/2 is ω = 3/4, hard spheres ω = 1/2, Maxwell molecules ω = 1, and VHS any ω with A
-// from (d_ref, T_ref).
+// write-up's σ = 1e-18 c_r^-1/2 (inverse-root) is ω = 3/4, hard spheres ω = 1/2, Maxwell molecules ω = 1, and
+// VHS any ω with A from (d_ref, T_ref).
 #pragma once
 
 #include "DsmcParams.h"
@@ -11,8 +11,8 @@
 namespace pl {
 
 struct CollisionModel {
-    enum class Kind { Seed, HardSphere, Vhs, Maxwell };
-    Kind kind = Kind::Seed;
+    enum class Kind { InverseRoot, HardSphere, Vhs, Maxwell };
+    Kind kind = Kind::InverseRoot;
     double prefactor = 1e-18; // A [m^(2ω+1) s^(2ω−2)]
     double omega = 0.75;
 
@@ -26,7 +26,7 @@ struct CollisionModel {
     // σ c_r [m³/s]. The common exponents get exact fast paths; pow only for a general VHS ω.
     double sigmaCr(double cr) const {
         switch (kind) {
-        case Kind::Seed:
+        case Kind::InverseRoot:
             return prefactor * std::sqrt(cr);
         case Kind::HardSphere:
             return prefactor * cr;

@@ -1,4 +1,4 @@
-// Initial velocities: the seed's two beams, a single Maxwellian, or the BKW distribution.
+// Initial velocities: the write-up's two beams, a single Maxwellian, or the BKW distribution.
 #include "DsmcModel.h"
 
 #include "common/Philox.h"
@@ -48,8 +48,8 @@ void DsmcModel::addPopulation(long long count, double drift, std::uint8_t origin
     if (count <= 0) return;
     // Gaussian thermal velocities, then moment matching: each population's sample mean is removed and its
     // sample temperature set to exactly the parameter, so the mean velocity of the cell is exactly the
-    // mean drift and its temperature exactly the analytic value (the seed's 17.83 K), not that ± noise.
-    // (The seed samples with Birdsall's sum of three uniforms, whose variance gives 1/8 of the requested
+    // mean drift and its temperature exactly the analytic value (the write-up's 17.83 K), not that ± noise.
+    // (The write-up samples with Birdsall's sum of three uniforms, whose variance gives 1/8 of the requested
     // temperature; we sample the Maxwellian it intends.)
     const std::size_t first = state_.size();
     const double sigma = std::sqrt(kBoltzmann * params_.temperature / params_.mass());

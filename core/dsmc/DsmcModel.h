@@ -1,4 +1,4 @@
-// Bird's No-Time-Counter DSMC in one collision cell (the seed): the NTC loop once, the collision model
+// Bird's No-Time-Counter DSMC in one collision cell (the write-up): the NTC loop once, the collision model
 // an interchangeable CollisionModel. step() reads like the method: candidates, selection, acceptance,
 // scattering.
 #pragma once

@@ -9,24 +9,24 @@
 
 namespace pl {
 
-// σ c_r as a function of c_r: the seed's σ = 1e-18 c_r^-1/2 m², hard spheres, VHS or Maxwell molecules.
-enum class DsmcCrossSection { Seed, HardSphere, Vhs, Maxwell };
-// The initial velocities: the seed's two beams along x, one Maxwellian gas at rest, or the BKW state.
+// σ c_r as a function of c_r: the write-up's σ = 1e-18 c_r^-1/2 m², hard spheres, VHS or Maxwell molecules.
+enum class DsmcCrossSection { InverseRoot, HardSphere, Vhs, Maxwell };
+// The initial velocities: the write-up's two beams along x, one Maxwellian gas at rest, or the BKW state.
 enum class DsmcInitialState { TwoBeams, Maxwellian, Bkw };
 // The names of each choice as preset files and the command line spell them.
 const ChoiceTable<DsmcCrossSection>& choiceTable(DsmcCrossSection);
 const ChoiceTable<DsmcInitialState>& choiceTable(DsmcInitialState);
 
 struct DsmcParams {
-    // Gas and cell (the seed: O2, F_N = 5e8, V_c = 1e-8 m³, Δt = 2e-5 s, 500 steps)
+    // Gas and cell (write-up: O2, F_N = 5e8, V_c = 1e-8 m³, Δt = 2e-5 s, 500 steps)
     double massAmu = 32.0;    // molecular mass [u]
     double fn = 5e8;          // real molecules per simulated particle
     double cellVolume = 1e-8; // [m³]
     double dt = 2e-5;         // [s]
-    long long runSteps = 500; // the run stops here (as the seed does); 0 runs on
+    long long runSteps = 500; // the run stops here (as the write-up does); 0 runs on
 
     // Collision model: σ c_r as a function of the relative speed c_r
-    DsmcCrossSection crossSection = DsmcCrossSection::Seed;
+    DsmcCrossSection crossSection = DsmcCrossSection::InverseRoot;
     double diameter = 4.07e-10;      // hard-sphere diameter [m]
     double vhsDiameter = 4.07e-10;   // VHS reference diameter d_ref [m] (O2, Bird 1994 App. A)
     double vhsTref = 273.0;          // VHS reference temperature [K]
@@ -46,7 +46,7 @@ struct DsmcParams {
     double temperature = 5.0; // of each beam, or of the Maxwellian / BKW state [K]
 
     // Observation
-    double histogramSpeedMax = 450.0; // speed histogram range [0, max] [m/s] (seed: 0–450, 25 bins)
+    double histogramSpeedMax = 450.0; // speed histogram range [0, max] [m/s] (write-up: 0–450, 25 bins)
     long long histogramBins = 25;
 
     double mass() const; // [kg]

@@ -14,7 +14,8 @@ CrossSectionSpecs crossSectionSpecs(const MolecularParamsText& text, const Molec
     const std::string& group = text.collisionGroup;
     return {
         makeChoice("cross_section", "Cross-section", group,
-                   std::string("seed: σ = 1e-18 c_r^-1/2 m²") + (text.seedScene ? " as written" : "") +
+                   std::string("inverse-root: σ = 1e-18 c_r^-1/2 m²") +
+                       (text.writeUpScene ? " as written" : "") +
                        "; hard-sphere: σ = π d²; vhs: variable hard sphere (d_ref, T_ref, ω); maxwell: σ c_r "
                        "constant.",
                    true),

@@ -16,7 +16,7 @@ struct MolecularParamsText {
     std::string massGroup;      // panel section of mass_amu
     std::string collisionGroup; // panel section of the cross-section model and its constants
     std::string gas;            // the gas of the defaults, as the tooltips name it: "O2", "argon"
-    bool seedScene = false; // the scene of the seed write-up, whose σ the tooltip says is used as written
+    bool writeUpScene = false;  // the scene of the write-up, whose σ the tooltip says is used as written
 };
 
 // The defaults of one scene's struct (DsmcParams{}, TunnelParams{}), which the specs offer and some

@@ -1,7 +1,7 @@
 // The SPH kernels and per-pair terms of Position-Based Fluids (Macklin & Müller 2013, eqs. 1–13), written
 // for one pair at a time so the CPU loops and the GPU shaders share them function for function.
 //
-// Normalisation: the seed (and its Taichi ancestor) use the 3D constants in 2D,
+// Normalisation: the write-up (and its Taichi ancestor) use the 3D constants in 2D,
 //   poly6 W = 315/(64π h⁹)(h² − r²)³,   spiky ∇W = −45/(π h⁶)(h − r)² r̂,
 // whose integrals over the plane are 315/(256 h) and 3/(2 h), not 1. With ρ₀ = 1 this only
 // rescales ρ, λ and in effect ε. The 2D constants that do integrate to 1 are
@@ -16,8 +16,8 @@
 #include "common/Lanes.h"
 
 namespace pl {
-// Which constants the kernels use (the header comment): the seed's 3D ones, or those normalised in 2D.
-enum class FluidKernelConstants { Seed3d, Normalised2d };
+// Which constants the kernels use (the header comment): the write-up's 3D ones, or those normalised in 2D.
+enum class FluidKernelConstants { Unnormalised3d, Normalised2d };
 } // namespace pl
 
 namespace pl::fluid {
@@ -39,7 +39,7 @@ struct Kernels {
             k.poly6 = 4.0 / (pi * std::pow(h, 8));
             k.spiky = 10.0 / (pi * std::pow(h, 5));
             k.spikyGrad = 30.0 / (pi * std::pow(h, 5));
-        } else { // FluidKernelConstants::Seed3d
+        } else { // FluidKernelConstants::Unnormalised3d
             k.poly6 = 315.0 / (64.0 * pi * std::pow(h, 9));
             k.spiky = 15.0 / (pi * std::pow(h, 6));
             k.spikyGrad = 45.0 / (pi * std::pow(h, 6));
@@ -47,7 +47,7 @@ struct Kernels {
         return k;
     }
 
-    // Poly6 from the squared distance. As in the seed, a pair at r = 0 weighs nothing (it has no gradient
+    // Poly6 from the squared distance. As in the write-up, a pair at r = 0 weighs nothing (it has no gradient
     // to separate it either); a particle's own weight is added, or not, by selfWeight().
     double w(double r2) const {
         if (r2 >= h2 || r2 <= 0.0) return 0.0;

@@ -96,7 +96,7 @@ void FluidModel::afterStep() {
 void FluidModel::drainOverCap() {
     const auto n = static_cast<long long>(state_.size());
     if (!params_.drain || n <= params_.maxParticles) return;
-    // The seed's drain: the excess leaves through the bottom, lowest particles first (ties by index, so
+    // The write-up's drain: the excess leaves through the bottom, lowest particles first (ties by index, so
     // the choice is deterministic).
     std::vector<std::size_t> lowest(state_.size());
     std::iota(lowest.begin(), lowest.end(), 0);

@@ -1,4 +1,4 @@
-// Position-Based Fluids (Macklin & Müller 2013) in 2D: the seed's interactive tank. step() reads like the
+// Position-Based Fluids (Macklin & Müller 2013) in 2D: the write-up's interactive tank. step() reads like the
 // paper's Algorithm 1; each pass over the particles is in gather form (it writes only particle i), so the
 // GPU backend can mirror it kernel for kernel.
 #pragma once
@@ -22,7 +22,7 @@ struct FluidObservables {
     // Density error: the compression max(ρ/ρ₀ − 1, 0), mean over particles and max. The free surface is
     // always under-dense, so a signed mean would measure the surface rather than the compressibility.
     double densityErrorMean = 0, densityErrorMax = 0;
-    double densityRatioMean = 0; // ⟨ρ/ρ₀⟩, signed: the seed's ρ₀ = 1 shows here
+    double densityRatioMean = 0; // ⟨ρ/ρ₀⟩, signed: the write-up's ρ₀ = 1 shows here
     double kinetic = 0;          // Σ ½ v² (unit masses) [L²/s²]
     double maxSpeed = 0;
     double neighboursMean = 0, neighboursMin = 0, neighboursMax = 0; // within h

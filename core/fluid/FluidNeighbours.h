@@ -52,7 +52,7 @@ public:
 
     // The blocks [first, last) that the calling thread of an OpenMP region takes in a pair pass: equal
     // shares of the slots (plus one per block, for its closing arithmetic) rather than of the blocks, so
-    // that the thread with the dense bottom of a tank does not keep the other waiting (the filled seed
+    // that the thread with the dense bottom of a tank does not keep the other waiting (the filled write-up
     // tank's first half of the blocks holds 1.4 times the slots of the second). Which thread sums a block
     // changes no bit. Outside a parallel region: all blocks.
     struct BlockRange {

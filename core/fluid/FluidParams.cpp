@@ -46,47 +46,49 @@ const std::vector<ParamField<FluidParams>>& FluidParams::fields() {
         const auto real = [&f](double P::*member, ParamSpec spec) {
             f.push_back(bindReal(member, std::move(spec)));
         };
-        real(&P::boxWidth, makeSpec("box_width", "Box width", "L", "World", "Width of the tank (seed 80).", 1,
-                                    1e5, 1, d.boxWidth));
+        real(&P::boxWidth, makeSpec("box_width", "Box width", "L", "World",
+                                    "Width of the tank (write-up: 80).", 1, 1e5, 1, d.boxWidth));
         real(&P::boxHeight, makeSpec("box_height", "Box height", "L", "World",
-                                     "Height of the tank (seed 40).", 1, 1e5, 1, d.boxHeight));
+                                     "Height of the tank (write-up: 40).", 1, 1e5, 1, d.boxHeight));
         f.push_back(bindBool(&P::gravityOn,
                              makeSpec("gravity_on", "Gravity on", "", "World",
-                                      "The seed's gravity toggle (key G).", 0, 1, 1, d.gravityOn, true)));
+                                      "The write-up's gravity toggle (key G).", 0, 1, 1, d.gravityOn, true)));
         real(&P::gravity, makeSpec("gravity", "Gravity", "L/s²", "World",
                                    "Downward acceleration; 0 for none.", -1e4, 1e4, 0.5, d.gravity, true));
         real(&P::gravityX, makeSpec("gravity_x", "Gravity x", "L/s²", "World",
                                     "Horizontal component of gravity.", -1e4, 1e4, 0.5, d.gravityX, true));
 
-        real(&P::dt, makeSpec("dt", "Time step", "s", "Solver", "Step Δt (seed 1/20 = 0.05).", 1e-6, 1, 0.005,
-                              d.dt, true));
-        f.push_back(
-            bindInteger(&P::runSteps, makeSpec("run_steps", "Run length", "steps", "Solver",
-                                               "The run stops after this many steps; 0 runs on (the seed).",
-                                               0, 1e12, 100, double(d.runSteps), true)));
-        f.push_back(bindInteger(&P::iterations,
-                                makeSpec("iterations", "Iterations", "", "Solver",
-                                         "Jacobi iterations of the density constraint per step (seed 5).", 1,
-                                         1000, 1, double(d.iterations), true)));
+        real(&P::dt, makeSpec("dt", "Time step", "s", "Solver", "Step Δt (write-up: 1/20 = 0.05).", 1e-6, 1,
+                              0.005, d.dt, true));
+        f.push_back(bindInteger(&P::runSteps,
+                                makeSpec("run_steps", "Run length", "steps", "Solver",
+                                         "The run stops after this many steps; 0 runs on (the write-up).", 0,
+                                         1e12, 100, double(d.runSteps), true)));
+        f.push_back(bindInteger(
+            &P::iterations, makeSpec("iterations", "Iterations", "", "Solver",
+                                     "Jacobi iterations of the density constraint per step (write-up: 5).", 1,
+                                     1000, 1, double(d.iterations), true)));
         real(&P::h, makeSpec("h", "Kernel radius h", "L", "Solver",
-                             "Support radius of the kernels (seed 1.1); spawn spacing is 0.8 h.", 1e-3, 1e4,
-                             0.1, d.h));
-        real(&P::neighbourFactor, makeSpec("neighbour_factor", "Neighbour radius / h", "", "Solver",
-                                           "Neighbours are searched within this multiple of h (seed 1.05).",
-                                           1, 3, 0.05, d.neighbourFactor, true));
-        real(&P::epsilon, makeSpec("epsilon", "Relaxation ε", "", "Solver",
-                                   "Added to the constraint's gradient norm; larger is softer (seed 100).", 0,
-                                   1e6, 1, d.epsilon, true));
+                             "Support radius of the kernels (write-up: 1.1); spawn spacing is 0.8 h.", 1e-3,
+                             1e4, 0.1, d.h));
+        real(&P::neighbourFactor,
+             makeSpec("neighbour_factor", "Neighbour radius / h", "", "Solver",
+                      "Neighbours are searched within this multiple of h (write-up: 1.05).", 1, 3, 0.05,
+                      d.neighbourFactor, true));
+        real(&P::epsilon,
+             makeSpec("epsilon", "Relaxation ε", "", "Solver",
+                      "Added to the constraint's gradient norm; larger is softer (write-up: 100).", 0, 1e6, 1,
+                      d.epsilon, true));
         f.push_back(bindChoice(&P::kernel, makeChoice("kernel", "Kernel constants", "Solver",
-                                                      "seed-3d: poly6 315/(64π h⁹), spiky 45/(π h⁶), as "
+                                                      "3d: poly6 315/(64π h⁹), spiky 45/(π h⁶), as "
                                                       "written (3D constants in 2D); 2d: 4/(π h⁸) and "
                                                       "30/(π h⁵).",
                                                       true)));
         f.push_back(
             bindBool(&P::selfDensity,
                      makeSpec("self_density", "Self term in ρ", "", "Solver",
-                              "Include W(0) in each particle's density, as SPH does (the seed omits it).", 0,
-                              1, 1, d.selfDensity, true)));
+                              "Include W(0) in each particle's density, as SPH does (the write-up omits it).",
+                              0, 1, 1, d.selfDensity, true)));
         f.push_back(bindChoice(&P::restDensitySource,
                                makeChoice("rest_density_source", "Rest density from", "Solver",
                                           "value: ρ₀ = rest_density; spawn-lattice: ρ₀ is the density of a "
@@ -94,36 +96,36 @@ const std::vector<ParamField<FluidParams>>& FluidParams::fields() {
                                           true)));
         real(&P::restDensity,
              makeSpec("rest_density", "Rest density ρ₀", "", "Solver",
-                      "Target density with unit masses (seed 1).", 1e-9, 1e9, 0.1, d.restDensity, true));
+                      "Target density with unit masses (write-up: 1).", 1e-9, 1e9, 0.1, d.restDensity, true));
         real(&P::scorrK, makeSpec("scorr_k", "s_corr k", "", "Solver",
-                                  "Strength of the artificial pressure (seed 0.001); 0: off.", 0, 10, 0.001,
-                                  d.scorrK, true));
+                                  "Strength of the artificial pressure (write-up: 0.001); 0: off.", 0, 10,
+                                  0.001, d.scorrK, true));
         real(&P::scorrDq, makeSpec("scorr_dq", "s_corr Δq / h", "", "Solver",
-                                   "Reference distance of the artificial pressure (seed 0.3).", 0, 1, 0.05,
-                                   d.scorrDq, true));
+                                   "Reference distance of the artificial pressure (write-up: 0.3).", 0, 1,
+                                   0.05, d.scorrDq, true));
         f.push_back(bindInteger(&P::scorrN, makeSpec("scorr_n", "s_corr n", "", "Solver",
-                                                     "Exponent of the artificial pressure (seed 4).", 1, 16,
-                                                     1, double(d.scorrN), true)));
+                                                     "Exponent of the artificial pressure (write-up: 4).", 1,
+                                                     16, 1, double(d.scorrN), true)));
         real(&P::particleRadius, makeSpec("particle_radius", "Particle radius", "L", "Solver",
                                           "Walls and obstacles keep particle centres this far away (0.3).", 0,
                                           100, 0.05, d.particleRadius, true));
         real(&P::xsph, makeSpec("xsph", "XSPH viscosity c", "", "Solver",
-                                "Velocity smoothing of the paper (0.01 there); 0: off, as in the seed.", 0, 1,
-                                0.01, d.xsph, true));
+                                "Velocity smoothing of the paper (0.01 there); 0: off, as in the write-up.",
+                                0, 1, 0.01, d.xsph, true));
         real(&P::vorticity, makeSpec("vorticity", "Vorticity confinement ε", "", "Solver",
-                                     "Re-injects vorticity lost to damping; 0: off, as in the seed.", 0, 100,
-                                     0.01, d.vorticity, true));
+                                     "Re-injects vorticity lost to damping; 0: off, as in the write-up.", 0,
+                                     100, 0.01, d.vorticity, true));
 
         real(&P::spawnSpacing, makeSpec("spawn_spacing", "Spawn spacing / h", "", "Particles",
-                                        "Grid spacing of spawned fluid in units of h (seed 0.8).", 0.2, 2,
-                                        0.05, d.spawnSpacing, true));
+                                        "Grid spacing of spawned fluid in units of h (write-up: 0.8).", 0.2,
+                                        2, 0.05, d.spawnSpacing, true));
         f.push_back(
             bindInteger(&P::maxParticles, makeSpec("max_particles", "Particle cap", "", "Particles",
-                                                   "Most particles in the tank (seed 3000).", 1,
+                                                   "Most particles in the tank (write-up: 3000).", 1,
                                                    kMaxParticles, 100, double(d.maxParticles), true)));
         f.push_back(
             bindBool(&P::drain, makeSpec("drain", "Drain over the cap", "", "Particles",
-                                         "On: the lowest particles drain away over the cap (the seed); "
+                                         "On: the lowest particles drain away over the cap (the write-up); "
                                          "off: spawns over the cap are refused.",
                                          0, 1, 1, d.drain, true)));
         real(&P::fillX0, makeSpec("fill_x0", "Initial block x₀", "L", "Particles",
@@ -131,18 +133,18 @@ const std::vector<ParamField<FluidParams>>& FluidParams::fields() {
         real(&P::fillY0, makeSpec("fill_y0", "Initial block y₀", "L", "Particles",
                                   "Bottom edge of the fluid present at t = 0.", 0, 1e5, 1, d.fillY0));
         real(&P::fillX1, makeSpec("fill_x1", "Initial block x₁", "L", "Particles",
-                                  "Right edge of the initial block; x₁ ≤ x₀ starts empty (the seed).", 0, 1e5,
-                                  1, d.fillX1));
+                                  "Right edge of the initial block; x₁ ≤ x₀ starts empty (the write-up).", 0,
+                                  1e5, 1, d.fillX1));
         real(&P::fillY1, makeSpec("fill_y1", "Initial block y₁", "L", "Particles",
                                   "Top edge of the initial block.", 0, 1e5, 1, d.fillY1));
         real(&P::toolSpeed,
-             makeSpec("tool_speed", "Drag speed limit", "× √(g H)", "Tools",
+             makeSpec("tool_speed_factor", "Drag speed limit", "× √(g H)", "Tools",
                       "Fastest a dragged obstacle moves, in units of the wave speed √(g H) of a tank-deep "
                       "layer: the fluid always meets a wall of finite speed, whatever the frame rate.",
                       1e-3, 10, 0.05, d.toolSpeed, true));
         real(&P::colourSpeedMax,
              makeSpec("colour_speed_max", "Colour scale top", "L/s", "Display",
-                      "Speed drawn fully red (seed 5).", 1e-6, 1e6, 0.5, d.colourSpeedMax, true));
+                      "Speed drawn fully red (write-up: 5).", 1e-6, 1e6, 0.5, d.colourSpeedMax, true));
         return f;
     }();
     return list;
@@ -157,7 +159,7 @@ double FluidParams::waveSpeed() const {
 }
 
 const ChoiceTable<FluidKernelConstants>& choiceTable(FluidKernelConstants) {
-    static const ChoiceTable<FluidKernelConstants> table{{FluidKernelConstants::Seed3d, "seed-3d"},
+    static const ChoiceTable<FluidKernelConstants> table{{FluidKernelConstants::Unnormalised3d, "3d"},
                                                          {FluidKernelConstants::Normalised2d, "2d"}};
     return table;
 }

@@ -1,5 +1,5 @@
 // Parameters of the position-based fluid (world units: L, s; unit particle mass). One table drives presets,
-// the CLI and the UI. Defaults are the seed's (80 × 40 world, h = 1.1, ε = 100, 5 iterations, Δt = 1/20).
+// the CLI and the UI. Defaults are the write-up's (80 × 40 world, h = 1.1, ε = 100, 5 iterations, Δt = 1/20).
 #pragma once
 
 #include "FluidKernels.h"
@@ -19,20 +19,20 @@ const ChoiceTable<FluidRestDensitySource>& choiceTable(FluidRestDensitySource);
 struct FluidParams {
     // World and external field
     double boxWidth = 80.0, boxHeight = 40.0; // box [0, W] × [0, H]
-    bool gravityOn = true;                    // the seed's toggle (key G), shared with the gas
+    bool gravityOn = true;                    // the write-up's toggle (key G), shared with the gas
     double gravity = 9.8;                     // downward acceleration [L/s²]; negative pulls up
     double gravityX = 0.0;                    // horizontal acceleration [L/s²]
 
     // Solver (Macklin & Müller 2013)
     double dt = 0.05;              // [s]
-    long long runSteps = 0;        // a run stops here; 0 runs on (the seed)
+    long long runSteps = 0;        // a run stops here; 0 runs on (the write-up)
     long long iterations = 5;      // Jacobi iterations of λ and Δx per step
     double h = 1.1;                // kernel support radius [L]
     double neighbourFactor = 1.05; // neighbour search radius / h
     double epsilon = 100.0;        // constraint relaxation ε
     FluidKernelConstants kernel =
-        FluidKernelConstants::Seed3d; // 3D constants as written, or normalised in 2D
-    bool selfDensity = false;         // ρ_i includes W(0) (the paper); the seed omits it
+        FluidKernelConstants::Unnormalised3d; // 3D constants as written, or normalised in 2D
+    bool selfDensity = false;                 // ρ_i includes W(0) (the paper); the write-up omits it
     FluidRestDensitySource restDensitySource = FluidRestDensitySource::Value; // or ρ of the spawn grid
     double restDensity = 1.0;                                                 // ρ₀
     double scorrK = 0.001, scorrDq = 0.3; // s_corr = −k (W(r) / W(Δq h))ⁿ
@@ -44,7 +44,7 @@ struct FluidParams {
     // Particles
     double spawnSpacing = 0.8; // spawn lattice spacing / h
     long long maxParticles = 3000;
-    bool drain = true; // over the cap, the lowest particles drain away (the seed); off: spawns refused
+    bool drain = true; // over the cap, the lowest particles drain away (the write-up); off: spawns refused
     double fillX0 = 0, fillY0 = 0, fillX1 = 0, fillY1 = 0; // initial block of fluid; empty when x1 ≤ x0
 
     // Tools

@@ -1,4 +1,4 @@
-// The fluid as the viewport and the mouse tools see it: the seed's sea-green tank with blue → red speed
+// The fluid as the viewport and the mouse tools see it: the write-up's sea-green tank with blue → red speed
 // colours, and the drag-to-spawn rectangle filled on a grid of spacing 0.8 h.
 #include "FluidModel.h"
 #include "FluidSpawnGrid.h"
@@ -41,12 +41,12 @@ SceneView FluidModel::sceneFrame() const {
     view.bottom = 0;
     view.right = params_.boxWidth;
     view.top = params_.boxHeight;
-    view.background = {46 / 255.0f, 139 / 255.0f, 87 / 255.0f}; // the seed's #2E8B57
+    view.background = {46 / 255.0f, 139 / 255.0f, 87 / 255.0f}; // the write-up's #2E8B57
     view.colours = ColourMap::BlueRed;
     view.colourLabel = "speed";
     view.colourMax = params_.colourSpeedMax;
     if (state_.size() == 0) view.hint = "Click and drag to pour fluid";
-    view.dragPours = true; // the seed's one gesture: dragging pours, whatever else is on screen
+    view.dragPours = true; // the write-up's one gesture: dragging pours, whatever else is on screen
     view.obstacles = obstacles_;
     return view;
 }

@@ -44,7 +44,7 @@ void FluidModel::applyExternalForcesAndPredict() {
     }
 }
 
-// Lines 5–7: neighbours within the search radius (1.05 h in the seed) of the predicted positions, found
+// Lines 5–7: neighbours within the search radius (1.05 h in the write-up) of the predicted positions, found
 // once and kept through the iterations; the corrections move particles by a fraction of h.
 // The iterations then run in solver numbers (FluidNeighbours.h): px_, py_ and every per-particle array of
 // the λ and Δx passes are in cell order until leaveSolverNumbers().

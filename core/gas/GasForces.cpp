@@ -1,4 +1,4 @@
-// Force passes: Verlet neighbour lists built from the cell list (default) and the seed's all-pairs loop;
+// Force passes: Verlet neighbour lists built from the cell list (default) and the write-up's all-pairs loop;
 // both give the same forces to round-off. Gather form: only particle i's sums take pair (i, j).
 #include "GasDrift.h"
 #include "GasKernels.h"

@@ -11,7 +11,7 @@ namespace pl {
 
 namespace {
 constexpr int kPlacementTries = 64;          // random draws per disk before giving up on avoiding obstacles
-constexpr double kWallMarginDiameters = 1.5; // the seed keeps centres 1.5 d from the walls
+constexpr double kWallMarginDiameters = 1.5; // the write-up keeps centres 1.5 d from the walls
 } // namespace
 
 void GasModel::buildInitialState() {
@@ -39,7 +39,7 @@ bool GasModel::insideSpace(double x, double y, double radius) const {
     return true;
 }
 
-// Uniform positions as in the seed (overlaps allowed: soft disks push apart); re-drawn inside obstacles.
+// Uniform positions as in the write-up (overlaps allowed: soft disks push apart); re-drawn inside obstacles.
 void GasModel::placeRandom(long long first, long long count, int species) {
     const auto& sp = params_.species(species);
     const double margin = std::min(kWallMarginDiameters * sp.diameter,
@@ -102,7 +102,7 @@ void GasModel::assignVelocities() {
     for (std::size_t i = 0; i < state_.size(); ++i) {
         const auto words = randomWords(seed_, RngPurpose::InitialVelocity, state_.id[i], 0);
         if (fixed) {
-            // The seed: speed V0 in a uniformly random direction.
+            // The write-up: speed V0 in a uniformly random direction.
             const double theta = 2.0 * std::numbers::pi * unitOpen(words[0], words[1]);
             state_.vx[i] = params_.initSpeed * std::cos(theta);
             state_.vy[i] = params_.initSpeed * std::sin(theta);

@@ -16,7 +16,7 @@ struct PairResult {
 };
 
 // Harmonic repulsion (docs/gas.md#pair-force): f_ij = k (d − r) r̂_ij for r < d, zero beyond.
-// Seed: a = k (d − r)/r · dr.
+// The write-up: a = k (d − r)/r · dr.
 inline bool harmonicPair(double dx, double dy, double contactDiameter, double stiffness, PairResult& out) {
     const double r2 = dx * dx + dy * dy;
     if (r2 >= contactDiameter * contactDiameter || r2 < kCoincidentR2) return false;

@@ -98,7 +98,8 @@ public:
     void drivePiston(int direction) override;
     int pistonDirection() const override { return pistonDrive_.direction(); }
     void placePiston(double x) override;
-    // The initial rms speed of species A [L/T]: the scale of tool_speed, piston_speed and the colours.
+    // The initial rms speed of species A [L/T]: the scale of tool_speed_factor, piston_speed_factor and the
+    // colours.
     double initialRmsSpeed() const;
 
     SpawnResult spawnRectangle(double x0, double y0, double x1, double y1, int species, double kT);

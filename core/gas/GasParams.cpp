@@ -75,46 +75,46 @@ std::vector<ParamField<GasParams>> makeFields() {
     const GasParams d;
     std::vector<ParamField<P>> f;
     f.push_back(bindReal(&P::boxWidth, makeSpec("box_width", "Box width", "L", "Box",
-                                                "Width of the container; the seed's box is 2 wide.", 1e-3,
+                                                "Width of the container; the write-up's box is 2 wide.", 1e-3,
                                                 1e5, 0.1, d.boxWidth)));
     f.push_back(bindReal(&P::boxHeight, makeSpec("box_height", "Box height", "L", "Box",
-                                                 "Height of the container; the seed's box is 2 high.", 1e-3,
-                                                 1e5, 0.1, d.boxHeight)));
-    addSpecies(f, &P::a, "A", d.a, "the seed has 4096.", " The seed uses 0.01.");
+                                                 "Height of the container; the write-up's box is 2 high.",
+                                                 1e-3, 1e5, 0.1, d.boxHeight)));
+    addSpecies(f, &P::a, "A", d.a, "the write-up has 4096.", " The write-up uses 0.01.");
     addSpecies(f, &P::b, "B", d.b, "0 for a one-species gas.", "");
-    f.push_back(
-        bindReal(&P::stiffness,
-                 makeSpec("stiffness", "Stiffness k", "M/T²", "Interaction",
-                          "Spring constant of the harmonic repulsion U = k/2 (d − r)²; the seed uses 1000.",
-                          1e-6, 1e12, 100, d.stiffness, true)));
+    f.push_back(bindReal(
+        &P::stiffness,
+        makeSpec("stiffness", "Stiffness k", "M/T²", "Interaction",
+                 "Spring constant of the harmonic repulsion U = k/2 (d − r)²; the write-up uses 1000.", 1e-6,
+                 1e12, 100, d.stiffness, true)));
     f.push_back(bindChoice(&P::initVelocity,
                            makeChoice("init_velocity", "Initial velocities", "Initial state",
                                       "fixed-speed: every disk at init_speed in a random direction (the "
-                                      "seed); maxwell-boltzmann: Gaussian components at init_kT.")));
+                                      "write-up); maxwell-boltzmann: Gaussian components at init_kT.")));
     f.push_back(
         bindReal(&P::initSpeed, makeSpec("init_speed", "Initial speed", "L/T", "Initial state",
-                                         "Speed of every disk for fixed-speed starts; the seed uses 1.", 0,
-                                         1e6, 0.1, d.initSpeed)));
+                                         "Speed of every disk for fixed-speed starts; the write-up uses 1.",
+                                         0, 1e6, 0.1, d.initSpeed)));
     f.push_back(bindReal(&P::initKT, makeSpec("init_kT", "Initial kT", "M·L²/T²", "Initial state",
                                               "Temperature of maxwell-boltzmann starts and of spawned disks.",
                                               0, 1e12, 0.1, d.initKT, true)));
-    f.push_back(
-        bindChoice(&P::initPlacement, makeChoice("init_placement", "Initial placement", "Initial state",
-                                                 "random: uniform positions, overlaps allowed (the seed); "
-                                                 "lattice: a square lattice, no overlaps.")));
+    f.push_back(bindChoice(&P::initPlacement,
+                           makeChoice("init_placement", "Initial placement", "Initial state",
+                                      "random: uniform positions, overlaps allowed (the write-up); "
+                                      "lattice: a square lattice, no overlaps.")));
     f.push_back(bindChoice(
         &P::integrator,
         makeChoice("integrator", "Integrator", "Integration",
                    "Time-stepping method; velocity Verlet is symplectic and time-reversible.", true)));
-    ParamSpec dt =
-        makeSpec("dt", "Time step", "T", "Integration",
-                 "Signed step; negative runs time backwards. The seed uses 1e-4.", -1, 1, 1e-5, d.dt, true);
+    ParamSpec dt = makeSpec("dt", "Time step", "T", "Integration",
+                            "Signed step; negative runs time backwards. The write-up uses 1e-4.", -1, 1, 1e-5,
+                            d.dt, true);
     dt.nonZero = true;
     f.push_back(bindReal(&P::dt, dt));
     f.push_back(bindChoice(
         &P::forceMethod,
         makeChoice("force_method", "Force search", "Integration",
-                   "cell-list: O(N) neighbour search; all-pairs: the seed's O(N²) loop, for comparison.",
+                   "cell-list: O(N) neighbour search; all-pairs: the write-up's O(N²) loop, for comparison.",
                    true)));
     f.push_back(
         bindReal(&P::gravity, makeSpec("gravity", "Gravity", "L/T²", "Walls and fields",
@@ -130,13 +130,13 @@ std::vector<ParamField<GasParams>> makeFields() {
                                                -5e4, 5e4, 0.01, d.pistonX, true)));
     f.push_back(bindReal(
         &P::pistonSpeed,
-        makeSpec("piston_speed", "Piston speed", "× rms speed", "Walls and fields",
+        makeSpec("piston_speed_factor", "Piston speed", "× rms speed", "Walls and fields",
                  "Speed of Compress and Expand, in units of the initial rms speed: well below 1 the gas "
                  "follows the adiabat T·A = const; near 1 it heats more.",
                  1e-4, 10, 0.01, d.pistonSpeed, true)));
     f.push_back(bindReal(
         &P::toolSpeed,
-        makeSpec("tool_speed", "Drag speed limit", "× rms speed", "Walls and fields",
+        makeSpec("tool_speed_factor", "Drag speed limit", "× rms speed", "Walls and fields",
                  "Fastest a dragged obstacle or the piston moves, in units of the initial rms speed: the "
                  "disks always meet a wall of finite speed, whatever the frame rate.",
                  1e-3, 100, 0.1, d.toolSpeed, true)));

@@ -22,28 +22,29 @@ const ChoiceTable<GasWallMode>& choiceTable(GasWallMode);
 struct GasSpeciesParams {
     long long count = 0;           // number of disks; 0 disables the species
     double mass = 1.0;             // [M], typical 1, range [1e-6, 1e6]
-    double diameter = 0.01;        // [L], typical 0.01 (seed), range [1e-6, 1e3]
+    double diameter = 0.01;        // [L], typical 0.01 (write-up), range [1e-6, 1e3]
     std::string color = "#6e87b0"; // drawing colour when colouring by species
 };
 
 struct GasParams {
-    // Box [−W/2, W/2] × [−H/2, H/2]; the seed's box is [−1, 1]².
+    // Box [−W/2, W/2] × [−H/2, H/2]; the write-up's box is [−1, 1]².
     double boxWidth = 2.0;  // [L], range [1e-3, 1e5]
     double boxHeight = 2.0; // [L], range [1e-3, 1e5]
 
     GasSpeciesParams a{4096, 1.0, 0.01, "#6e87b0"};
     GasSpeciesParams b{0, 4.0, 0.02, "#c87d3b"};
 
-    double stiffness = 1000.0; // k of U = k/2 (d − r)² [M/T²], typical 1e3 (seed), range [1e-6, 1e12]
+    double stiffness = 1000.0; // k of U = k/2 (d − r)² [M/T²], typical 1e3 (write-up), range [1e-6, 1e12]
 
-    GasInitVelocity initVelocity = GasInitVelocity::FixedSpeed; // fixed speed (seed) or Maxwell–Boltzmann
+    GasInitVelocity initVelocity = GasInitVelocity::FixedSpeed; // fixed speed (write-up) or Maxwell–Boltzmann
     double initSpeed = 1.0;                                     // fixed-speed magnitude [L/T], seed 1
     double initKT = 0.5;                                        // Maxwell–Boltzmann kT [M·L²/T²]
-    GasInitPlacement initPlacement = GasInitPlacement::Random;  // random (seed; overlaps allowed) or lattice
+    GasInitPlacement initPlacement =
+        GasInitPlacement::Random; // random (write-up; overlaps allowed) or lattice
 
     GasIntegrator integrator = GasIntegrator::VelocityVerlet; // an entry of GasIntegratorTable.h
     double dt = 1e-4; // signed time step [T]; negative runs time backwards
-    GasForceMethod forceMethod = GasForceMethod::CellList; // or all pairs (the seed's O(N²) loop)
+    GasForceMethod forceMethod = GasForceMethod::CellList; // or all pairs (the write-up's O(N²) loop)
 
     double gravity = 0.0;       // downward acceleration [L/T²] while gravityOn
     bool gravityOn = true;      // the gravity switch (key G), shared with the fluid

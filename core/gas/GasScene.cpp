@@ -8,7 +8,7 @@
 namespace pl {
 
 namespace {
-// The seed's V_COLOR_MAX: the top of the palette at 2.8 × the initial rms speed, so the Maxwell–Boltzmann
+// The write-up's V_COLOR_MAX: the top of the palette at 2.8 × the initial rms speed, so the Maxwell–Boltzmann
 // tail still shows as the warmest colours.
 constexpr double kColourScaleOverRms = 2.8;
 } // namespace

@@ -25,8 +25,8 @@ struct BenchPoint {
     double settleSeconds = 0;                      // [s] stepped before the repeats until the rate settled
 };
 
-// The seed's gas (velocity Verlet, d = 0.01, k = 1000, speed 1) with n disks at the seed's area fraction:
-// the box grows as √(n / 4096).
+// The write-up's gas (velocity Verlet, d = 0.01, k = 1000, speed 1) with n disks at the write-up's area
+// fraction: the box grows as √(n / 4096).
 Preset scaledGasPreset(std::size_t n);
 
 // The dam break's fluid (2D kernels, ε = 1, h = 0.8, spacing 0.4) with about n particles in one block at

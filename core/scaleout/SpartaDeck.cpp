@@ -82,8 +82,8 @@ VssParameters vssFor(const CollisionModel& model, double hardSphereDiameter, dou
 
 std::string crossSectionName(CollisionModel::Kind kind) {
     switch (kind) {
-    case CollisionModel::Kind::Seed:
-        return "the seed's sigma = 1e-18 c_r^-1/2 (VHS, omega = 3/4)";
+    case CollisionModel::Kind::InverseRoot:
+        return "inverse-root: sigma = 1e-18 c_r^-1/2 (VHS, omega = 3/4)";
     case CollisionModel::Kind::HardSphere:
         return "hard spheres (VHS, omega = 1/2)";
     case CollisionModel::Kind::Vhs:

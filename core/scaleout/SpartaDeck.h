@@ -19,7 +19,7 @@ struct VssParameters {
     double alpha = 1;
 };
 
-// The VHS parameters that give exactly our σ c_r: hard spheres and VHS directly, the seed's power law
+// The VHS parameters that give exactly our σ c_r: hard spheres and VHS directly, the write-up's power law
 // (ω = 3/4) and Maxwell molecules (ω = 1) through the reference diameter at vhs_tref (docs/dsmc.md).
 VssParameters vssParameters(const DsmcParams& params, const CollisionModel& model);
 VssParameters vssParameters(const TunnelParams& params, const CollisionModel& model);

@@ -131,7 +131,7 @@ void TunnelModel::collide(double h) {
             return model.prefactor * std::sqrt(cr2);
         case CollisionModel::Kind::Maxwell:
             return model.prefactor;
-        case CollisionModel::Kind::Seed:
+        case CollisionModel::Kind::InverseRoot:
             return model.prefactor * std::sqrt(std::sqrt(cr2));
         case CollisionModel::Kind::Vhs:
             break;

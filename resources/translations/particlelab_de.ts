@@ -141,7 +141,7 @@ Wirkt nach „Zurücksetzen“.</translation>
         <translation>Eine erzeugte Scheibe, die eine andere um mehr als diesen Bruchteil eines Durchmessers überlappt, wird abgelehnt.</translation>
     </message>
     <message>
-        <source>Added to the constraint&apos;s gradient norm; larger is softer (seed 100).</source>
+        <source>Added to the constraint&apos;s gradient norm; larger is softer (write-up: 100).</source>
         <translation>Wird zur Gradientennorm der Nebenbedingung addiert; größer ist weicher (Original: 100).</translation>
     </message>
     <message>
@@ -157,7 +157,7 @@ Wirkt nach „Zurücksetzen“.</translation>
         <translation>Geschwindigkeit Strahl 2</translation>
     </message>
     <message>
-        <source>Bins of the speed histogram (seed 25).</source>
+        <source>Bins of the speed histogram (write-up: 25).</source>
         <translation>Klassen des Geschwindigkeitshistogramms (Original: 25).</translation>
     </message>
     <message>
@@ -193,7 +193,7 @@ Wirkt nach „Zurücksetzen“.</translation>
         <translation>Klicken und ziehen, um Flüssigkeit einzugießen</translation>
     </message>
     <message>
-        <source>Collision time step; keep ν Δt well below 1 (seed 2e-5).</source>
+        <source>Collision time step; keep ν Δt well below 1 (write-up: 2e-5).</source>
         <translation>Zeitschritt der Stöße; ν Δt deutlich unter 1 halten (Original: 2e-5).</translation>
     </message>
     <message>
@@ -217,7 +217,7 @@ Wirkt nach „Zurücksetzen“.</translation>
         <translation>Obergrenze der Farbskala</translation>
     </message>
     <message>
-        <source>Contact diameter of one A disk. The seed uses 0.01.</source>
+        <source>Contact diameter of one A disk. The write-up uses 0.01.</source>
         <translation>Kontaktdurchmesser einer A-Scheibe. Das Original verwendet 0.01.</translation>
     </message>
     <message>
@@ -261,7 +261,7 @@ Wirkt nach „Zurücksetzen“.</translation>
         <translation>Abfluss über der Obergrenze</translation>
     </message>
     <message>
-        <source>Exponent of the artificial pressure (seed 4).</source>
+        <source>Exponent of the artificial pressure (write-up: 4).</source>
         <translation>Exponent des künstlichen Drucks (Original: 4).</translation>
     </message>
     <message>
@@ -273,7 +273,7 @@ Wirkt nach „Zurücksetzen“.</translation>
         <translation>Höchstgeschwindigkeit eines gezogenen Hindernisses oder des Kolbens in Einheiten der anfänglichen quadratisch gemittelten Geschwindigkeit: Die Scheiben treffen stets auf eine Wand endlicher Geschwindigkeit, unabhängig von der Bildrate.</translation>
     </message>
     <message>
-        <source>First guess of (σ c_r)_max (the seed: 1e-18); 0 estimates it from the initial state. It is raised whenever a pair exceeds it.</source>
+        <source>First guess of (σ c_r)_max (write-up: 1e-18); 0 estimates it from the initial state. It is raised whenever a pair exceeds it.</source>
         <translation>Erste Schätzung von (σ c_r)_max (Original: 1e-18); 0 schätzt ihn aus dem Anfangszustand. Er wird erhöht, sobald ein Paar ihn übertrifft.</translation>
     </message>
     <message>
@@ -305,7 +305,7 @@ Wirkt nach „Zurücksetzen“.</translation>
         <translation>Schwerkraft x</translation>
     </message>
     <message>
-        <source>Grid spacing of spawned fluid in units of h (seed 0.8).</source>
+        <source>Grid spacing of spawned fluid in units of h (write-up: 0.8).</source>
         <translation>Gitterabstand erzeugter Flüssigkeit in Einheiten von h (Original: 0.8).</translation>
     </message>
     <message>
@@ -313,11 +313,11 @@ Wirkt nach „Zurücksetzen“.</translation>
         <translation>Harte-Kugel-Durchmesser</translation>
     </message>
     <message>
-        <source>Height of the container; the seed&apos;s box is 2 high.</source>
+        <source>Height of the container; the write-up&apos;s box is 2 high.</source>
         <translation>Höhe des Behälters; der Behälter des Originals ist 2 hoch.</translation>
     </message>
     <message>
-        <source>Height of the tank (seed 40).</source>
+        <source>Height of the tank (write-up: 40).</source>
         <translation>Höhe des Beckens (Original: 40).</translation>
     </message>
     <message>
@@ -333,7 +333,7 @@ Wirkt nach „Zurücksetzen“.</translation>
         <translation>Waagerechte Komponente der Schwerkraft.</translation>
     </message>
     <message>
-        <source>Include W(0) in each particle&apos;s density, as SPH does (the seed omits it).</source>
+        <source>Include W(0) in each particle&apos;s density, as SPH does (the write-up omits it).</source>
         <translation>W(0) in die Dichte jedes Teilchens einbeziehen, wie bei SPH (das Original lässt ihn weg).</translation>
     </message>
     <message>
@@ -393,7 +393,7 @@ Wirkt nach „Zurücksetzen“.</translation>
         <translation>Iterationen</translation>
     </message>
     <message>
-        <source>Jacobi iterations of the density constraint per step (seed 5).</source>
+        <source>Jacobi iterations of the density constraint per step (write-up: 5).</source>
         <translation>Jacobi-Iterationen der Dichtebedingung pro Schritt (Original: 5).</translation>
     </message>
     <message>
@@ -449,7 +449,7 @@ Wirkt nach „Zurücksetzen“.</translation>
         <translation>Höchstzahl der Scheiben in der Szene; darüber wird nichts mehr erzeugt.</translation>
     </message>
     <message>
-        <source>Most particles in the tank (seed 3000).</source>
+        <source>Most particles in the tank (write-up: 3000).</source>
         <translation>Höchstzahl der Teilchen im Becken (Original: 3000).</translation>
     </message>
     <message>
@@ -457,11 +457,11 @@ Wirkt nach „Zurücksetzen“.</translation>
         <translation>Nachbarradius / h</translation>
     </message>
     <message>
-        <source>Neighbours are searched within this multiple of h (seed 1.05).</source>
+        <source>Neighbours are searched within this multiple of h (write-up: 1.05).</source>
         <translation>Nachbarn werden innerhalb dieses Vielfachen von h gesucht (Original: 1.05).</translation>
     </message>
     <message>
-        <source>Number of disks of species A; the seed has 4096.</source>
+        <source>Number of disks of species A; the write-up has 4096.</source>
         <translation>Anzahl der Scheiben der Sorte A; das Original hat 4096.</translation>
     </message>
     <message>
@@ -473,7 +473,7 @@ Wirkt nach „Zurücksetzen“.</translation>
         <translation>Beobachtung</translation>
     </message>
     <message>
-        <source>On: the lowest particles drain away over the cap (the seed); off: spawns over the cap are refused.</source>
+        <source>On: the lowest particles drain away over the cap (the write-up); off: spawns over the cap are refused.</source>
         <translation>An: Über der Obergrenze fließen die untersten Teilchen ab (wie im Original); aus: Erzeugen über der Obergrenze wird abgelehnt.</translation>
     </message>
     <message>
@@ -521,15 +521,15 @@ Wirkt nach „Zurücksetzen“.</translation>
         <translation>Verdünntes Gas (DSMC)</translation>
     </message>
     <message>
-        <source>Re-injects vorticity lost to damping; 0: off, as in the seed.</source>
+        <source>Re-injects vorticity lost to damping; 0: off, as in the write-up.</source>
         <translation>Führt durch Dämpfung verlorene Wirbelstärke wieder zu; 0: aus, wie im Original.</translation>
     </message>
     <message>
-        <source>Real molecules each simulated particle stands for (seed 5e8).</source>
+        <source>Real molecules each simulated particle stands for (write-up: 5e8).</source>
         <translation>Reale Moleküle, für die jedes simulierte Teilchen steht (Original: 5e8).</translation>
     </message>
     <message>
-        <source>Reference distance of the artificial pressure (seed 0.3).</source>
+        <source>Reference distance of the artificial pressure (write-up: 0.3).</source>
         <translation>Bezugsabstand des künstlichen Drucks (Original: 0.3).</translation>
     </message>
     <message>
@@ -549,7 +549,7 @@ Wirkt nach „Zurücksetzen“.</translation>
         <translation>Ruhedichte ρ₀</translation>
     </message>
     <message>
-        <source>Right edge of the initial block; x₁ ≤ x₀ starts empty (the seed).</source>
+        <source>Right edge of the initial block; x₁ ≤ x₀ starts empty (the write-up).</source>
         <translation>Rechte Kante des Anfangsblocks; x₁ ≤ x₀ beginnt leer (wie im Original).</translation>
     </message>
     <message>
@@ -561,7 +561,7 @@ Wirkt nach „Zurücksetzen“.</translation>
         <translation>Eigenterm in ρ</translation>
     </message>
     <message>
-        <source>Signed step; negative runs time backwards. The seed uses 1e-4.</source>
+        <source>Signed step; negative runs time backwards. The write-up uses 1e-4.</source>
         <translation>Vorzeichenbehafteter Schritt; negativ lässt die Zeit rückwärts laufen. Das Original verwendet 1e-4.</translation>
     </message>
     <message>
@@ -593,7 +593,7 @@ Wirkt nach „Zurücksetzen“.</translation>
         <translation>Sorte B</translation>
     </message>
     <message>
-        <source>Speed drawn fully red (seed 5).</source>
+        <source>Speed drawn fully red (write-up: 5).</source>
         <translation>Geschwindigkeit, die voll rot gezeichnet wird (Original: 5).</translation>
     </message>
     <message>
@@ -601,15 +601,15 @@ Wirkt nach „Zurücksetzen“.</translation>
         <translation>Geschwindigkeit von Verdichten und Entspannen in Einheiten der anfänglichen quadratisch gemittelten Geschwindigkeit: deutlich unter 1 folgt das Gas der Adiabate T·A = const; nahe 1 erwärmt es sich stärker.</translation>
     </message>
     <message>
-        <source>Speed of every disk for fixed-speed starts; the seed uses 1.</source>
+        <source>Speed of every disk for fixed-speed starts; the write-up uses 1.</source>
         <translation>Geschwindigkeit jeder Scheibe beim Start fixed-speed; das Original verwendet 1.</translation>
     </message>
     <message>
-        <source>Spring constant of the harmonic repulsion U = k/2 (d − r)²; the seed uses 1000.</source>
+        <source>Spring constant of the harmonic repulsion U = k/2 (d − r)²; the write-up uses 1000.</source>
         <translation>Federkonstante der harmonischen Abstoßung U = k/2 (d − r)²; das Original verwendet 1000.</translation>
     </message>
     <message>
-        <source>Step Δt (seed 1/20 = 0.05).</source>
+        <source>Step Δt (write-up: 1/20 = 0.05).</source>
         <translation>Schritt Δt (Original: 1/20 = 0.05).</translation>
     </message>
     <message>
@@ -617,15 +617,15 @@ Wirkt nach „Zurücksetzen“.</translation>
         <translation>Steifigkeit k</translation>
     </message>
     <message>
-        <source>Strength of the artificial pressure (seed 0.001); 0: off.</source>
+        <source>Strength of the artificial pressure (write-up: 0.001); 0: off.</source>
         <translation>Stärke des künstlichen Drucks (Original: 0.001); 0: aus.</translation>
     </message>
     <message>
-        <source>Support radius of the kernels (seed 1.1); spawn spacing is 0.8 h.</source>
+        <source>Support radius of the kernels (write-up: 1.1); spawn spacing is 0.8 h.</source>
         <translation>Trägerradius der Kerne (Original: 1.1); der Erzeugungsabstand ist 0.8 h.</translation>
     </message>
     <message>
-        <source>Target density with unit masses (seed 1).</source>
+        <source>Target density with unit masses (write-up: 1).</source>
         <translation>Zieldichte bei Einheitsmassen (Original: 1).</translation>
     </message>
     <message>
@@ -637,7 +637,7 @@ Wirkt nach „Zurücksetzen“.</translation>
         <translation>Temperatur, bei der d = d_ref gilt (273 K).</translation>
     </message>
     <message>
-        <source>Temperature of each beam, or of the single gas (seed 5).</source>
+        <source>Temperature of each beam, or of the single gas (write-up: 5).</source>
         <translation>Temperatur jedes Strahls oder des einzelnen Gases (Original: 5).</translation>
     </message>
     <message>
@@ -653,11 +653,11 @@ Wirkt nach „Zurücksetzen“.</translation>
         <translation>Das konstante σ c_r von Maxwell-Molekülen.</translation>
     </message>
     <message>
-        <source>The run stops after this many steps (seed 500); 0 runs on.</source>
+        <source>The run stops after this many steps (write-up: 500); 0 runs on.</source>
         <translation>Der Lauf endet nach so vielen Schritten (Original: 500); 0 läuft unbegrenzt.</translation>
     </message>
     <message>
-        <source>The run stops after this many steps; 0 runs on (the seed).</source>
+        <source>The run stops after this many steps; 0 runs on (the write-up).</source>
         <translation>Der Lauf endet nach so vielen Schritten; 0 läuft unbegrenzt (wie im Original).</translation>
     </message>
     <message>
@@ -665,7 +665,7 @@ Wirkt nach „Zurücksetzen“.</translation>
         <translation>Der Lauf endet, wenn die Gesamtenergie dieses Vielfache ihres Bezugswerts übersteigt.</translation>
     </message>
     <message>
-        <source>The seed&apos;s gravity toggle (key G).</source>
+        <source>The write-up&apos;s gravity toggle (key G).</source>
         <translation>Der Schwerkraftschalter des Originals (Taste G).</translation>
     </message>
     <message>
@@ -689,7 +689,7 @@ Wirkt nach „Zurücksetzen“.</translation>
         <translation>Oberkante des Anfangsblocks.</translation>
     </message>
     <message>
-        <source>Upper end of the speed histogram (seed 450).</source>
+        <source>Upper end of the speed histogram (write-up: 450).</source>
         <translation>Oberes Ende des Geschwindigkeitshistogramms (Original: 450).</translation>
     </message>
     <message>
@@ -713,15 +713,15 @@ Wirkt nach „Zurücksetzen“.</translation>
         <translation>Geschwindigkeitskomponenten</translation>
     </message>
     <message>
-        <source>Velocity of beam 1 along x (seed 100).</source>
+        <source>Velocity of beam 1 along x (write-up: 100).</source>
         <translation>Geschwindigkeit von Strahl 1 in x-Richtung (Original: 100).</translation>
     </message>
     <message>
-        <source>Velocity of beam 2 along x (seed 300).</source>
+        <source>Velocity of beam 2 along x (write-up: 300).</source>
         <translation>Geschwindigkeit von Strahl 2 in x-Richtung (Original: 300).</translation>
     </message>
     <message>
-        <source>Velocity smoothing of the paper (0.01 there); 0: off, as in the seed.</source>
+        <source>Velocity smoothing of the paper (0.01 there); 0: off, as in the write-up.</source>
         <translation>Geschwindigkeitsglättung aus dem Artikel (dort 0.01); 0: aus, wie im Original.</translation>
     </message>
     <message>
@@ -729,7 +729,7 @@ Wirkt nach „Zurücksetzen“.</translation>
         <translation>Viskositätsexponent: 0.5 harte Kugel, 1 Maxwell, O2 0.77.</translation>
     </message>
     <message>
-        <source>Volume of the collision cell (seed 1e-8).</source>
+        <source>Volume of the collision cell (write-up: 1e-8).</source>
         <translation>Volumen der Stoßzelle (Original: 1e-8).</translation>
     </message>
     <message>
@@ -753,11 +753,11 @@ Wirkt nach „Zurücksetzen“.</translation>
         <translation>Wände und Hindernisse halten Teilchenmittelpunkte so weit entfernt (0.3).</translation>
     </message>
     <message>
-        <source>Width of the container; the seed&apos;s box is 2 wide.</source>
+        <source>Width of the container; the write-up&apos;s box is 2 wide.</source>
         <translation>Breite des Behälters; der Behälter des Originals ist 2 breit.</translation>
     </message>
     <message>
-        <source>Width of the tank (seed 80).</source>
+        <source>Width of the tank (write-up: 80).</source>
         <translation>Breite des Beckens (Original: 80).</translation>
     </message>
     <message>
@@ -773,11 +773,11 @@ Wirkt nach „Zurücksetzen“.</translation>
         <translation>alle Teilchen</translation>
     </message>
     <message>
-        <source>cell-list: O(N) neighbour search; all-pairs: the seed&apos;s O(N²) loop, for comparison.</source>
+        <source>cell-list: O(N) neighbour search; all-pairs: the write-up&apos;s O(N²) loop, for comparison.</source>
         <translation>cell-list: Nachbarsuche in O(N); all-pairs: die O(N²)-Schleife des Originals, zum Vergleich.</translation>
     </message>
     <message>
-        <source>fixed-speed: every disk at init_speed in a random direction (the seed); maxwell-boltzmann: Gaussian components at init_kT.</source>
+        <source>fixed-speed: every disk at init_speed in a random direction (the write-up); maxwell-boltzmann: Gaussian components at init_kT.</source>
         <translation>fixed-speed: jede Scheibe mit init_speed in zufälliger Richtung (wie im Original); maxwell-boltzmann: gaußverteilte Komponenten bei init_kT.</translation>
     </message>
     <message>
@@ -785,7 +785,7 @@ Wirkt nach „Zurücksetzen“.</translation>
         <translation>Population</translation>
     </message>
     <message>
-        <source>random: uniform positions, overlaps allowed (the seed); lattice: a square lattice, no overlaps.</source>
+        <source>random: uniform positions, overlaps allowed (the write-up); lattice: a square lattice, no overlaps.</source>
         <translation>random: gleichverteilte Orte, Überlappungen erlaubt (wie im Original); lattice: ein Quadratgitter ohne Überlappungen.</translation>
     </message>
     <message>
@@ -805,12 +805,12 @@ Wirkt nach „Zurücksetzen“.</translation>
         <translation>s_corr Δq / h</translation>
     </message>
     <message>
-        <source>seed-3d: poly6 315/(64π h⁹), spiky 45/(π h⁶), as written (3D constants in 2D); 2d: 4/(π h⁸) and 30/(π h⁵).</source>
-        <translation>seed-3d: poly6 315/(64π h⁹), spiky 45/(π h⁶), wie im Original (3D-Konstanten in 2D); 2d: 4/(π h⁸) und 30/(π h⁵).</translation>
+        <source>3d: poly6 315/(64π h⁹), spiky 45/(π h⁶), as written (3D constants in 2D); 2d: 4/(π h⁸) and 30/(π h⁵).</source>
+        <translation>3d: poly6 315/(64π h⁹), spiky 45/(π h⁶), wie im Original (3D-Konstanten in 2D); 2d: 4/(π h⁸) und 30/(π h⁵).</translation>
     </message>
     <message>
-        <source>seed: σ = 1e-18 c_r^-1/2 m² as written; hard-sphere: σ = π d²; vhs: variable hard sphere (d_ref, T_ref, ω); maxwell: σ c_r constant.</source>
-        <translation>seed: σ = 1e-18 c_r^-1/2 m² wie im Original; hard-sphere: σ = π d²; vhs: variable harte Kugel (d_ref, T_ref, ω); maxwell: σ c_r konstant.</translation>
+        <source>inverse-root: σ = 1e-18 c_r^-1/2 m² as written; hard-sphere: σ = π d²; vhs: variable hard sphere (d_ref, T_ref, ω); maxwell: σ c_r constant.</source>
+        <translation>inverse-root: σ = 1e-18 c_r^-1/2 m² wie im Original; hard-sphere: σ = π d²; vhs: variable harte Kugel (d_ref, T_ref, ω); maxwell: σ c_r konstant.</translation>
     </message>
     <message>
         <source>species A</source>
@@ -833,7 +833,7 @@ Wirkt nach „Zurücksetzen“.</translation>
         <translation>Geschwindigkeit [m/s]</translation>
     </message>
     <message>
-        <source>two-beams: the seed&apos;s beams along x; maxwellian: one gas at rest; bkw: the BKW initial distribution (K₀ = 0.6).</source>
+        <source>two-beams: the write-up&apos;s beams along x; maxwellian: one gas at rest; bkw: the BKW initial distribution (K₀ = 0.6).</source>
         <translation>two-beams: die Strahlen des Originals in x-Richtung; maxwellian: ein ruhendes Gas; bkw: die BKW-Anfangsverteilung (K₀ = 0.6).</translation>
     </message>
     <message>
@@ -1477,8 +1477,8 @@ Wirkt nach „Zurücksetzen“.</translation>
         <translation>particles, oder ein gemitteltes Feld als Farbkarte.</translation>
     </message>
     <message>
-        <source>seed: σ = 1e-18 c_r^-1/2 m²; hard-sphere: σ = π d²; vhs: variable hard sphere (d_ref, T_ref, ω); maxwell: σ c_r constant.</source>
-        <translation>seed: σ = 1e-18 c_r^-1/2 m²; hard-sphere: σ = π d²; vhs: variable harte Kugeln (d_ref, T_ref, ω); maxwell: σ c_r konstant.</translation>
+        <source>inverse-root: σ = 1e-18 c_r^-1/2 m²; hard-sphere: σ = π d²; vhs: variable hard sphere (d_ref, T_ref, ω); maxwell: σ c_r constant.</source>
+        <translation>inverse-root: σ = 1e-18 c_r^-1/2 m²; hard-sphere: σ = π d²; vhs: variable harte Kugeln (d_ref, T_ref, ω); maxwell: σ c_r konstant.</translation>
     </message>
     <message>
         <source>simulated molecules</source>

@@ -37,14 +37,25 @@ private slots:
     void listShowsBuiltins() {
         const auto r = cli({"list"});
         QCOMPARE(r.exitCode, 0);
-        for (const char* name : {"gas-seed", "gas-classroom", "gas-mixture", "dsmc-seed", "dsmc-bkw",
-                                 "dsmc-maxwell-relax", "fluid-seed", "fluid-dam-break", "fluid-obstacle"})
+        for (const char* name : {"gas-write-up", "gas-classroom", "gas-mixture", "dsmc-write-up", "dsmc-bkw",
+                                 "dsmc-maxwell-relax", "fluid-write-up", "fluid-dam-break", "fluid-obstacle"})
             QVERIFY(r.out.contains(name));
         // Each line ends in the unit system its kind declares.
         for (const QString& line : r.out.split('\n', Qt::SkipEmptyParts)) {
             const pl::ModelDescriptor* kind = pl::findModel(line.section('\t', 1, 1).toStdString());
             QVERIFY2(kind, qPrintable(line));
             QCOMPARE(line.section('\t', -1), QString::fromStdString(kind->units.name));
+        }
+    }
+
+    // The write-up's scenes were named "-seed": the old names run the renamed preset, with a notice.
+    void oldPresetNamesRunWithANotice() {
+        for (const char* name : {"gas-seed", "dsmc-seed", "fluid-seed"}) {
+            const auto r = cli({"run", name, "--steps", "1", "--quiet"});
+            QCOMPARE(r.exitCode, 0);
+            const QString now = QString(name).replace("-seed", "-write-up");
+            QVERIFY2(r.err.contains(QString("the preset '%1' is now called '%2'").arg(name, now)),
+                     qPrintable(r.err));
         }
     }
 
@@ -62,7 +73,7 @@ private slots:
     // The columns command lists what run writes: its names are the CSV header, in order.
     void columnsListTheRunsHeader() {
         QTemporaryDir dir;
-        for (const char* preset : {"gas-seed", "dsmc-seed", "fluid-dam-break"}) {
+        for (const char* preset : {"gas-write-up", "dsmc-write-up", "fluid-dam-break"}) {
             const QString series = dir.filePath(QString(preset) + ".csv");
             QCOMPARE(cli({"run", preset, "--steps", "2", "--out", series, "--quiet"}).exitCode, 0);
             const auto r = cli({"columns", preset});
@@ -102,10 +113,10 @@ private slots:
     void dsmcSeedRunsItsPlannedLengthAndPrintsTheSeedsColumns() {
         QTemporaryDir dir;
         const QString series = dir.filePath("s.csv"), hist = dir.filePath("h.csv");
-        const auto r = cli({"run", "dsmc-seed", "--out", series, "--histogram", hist, "--quiet"});
+        const auto r = cli({"run", "dsmc-write-up", "--out", series, "--histogram", hist, "--quiet"});
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
         const QStringList rows = readLines(series);
-        QCOMPARE(rows.size(), 1 + 501); // the seed's 500 steps, every one sampled, plus the start
+        QCOMPARE(rows.size(), 1 + 501); // the write-up's 500 steps, every one sampled, plus the start
         const QStringList header = rows[0].split(',');
         for (const char* column : {"step", "time", "particles", "Tx", "Ty", "Tz", "T", "ux", "kurtosis_vx",
                                    "ng", "nc", "sigma_cr_max", "M4", "M6", "M8"})
@@ -115,7 +126,8 @@ private slots:
         QVERIFY(std::abs(last[header.indexOf("T")].toDouble() - 17.83) < 0.005);
         QVERIFY(std::abs(last[header.indexOf("ux")].toDouble() - 200.0) < 1e-9);
         const QStringList bins = readLines(hist);
-        QCOMPARE(bins.filter(QRegularExpression("^speed,")).size(), 25); // the seed's 0–450 m/s in 25 bins
+        QCOMPARE(bins.filter(QRegularExpression("^speed,")).size(),
+                 25); // the write-up's 0–450 m/s in 25 bins
         QCOMPARE(bins.filter(QRegularExpression("^vx,")).size(), 50);
     }
 
@@ -144,8 +156,9 @@ private slots:
         QTemporaryDir dir;
         const QString series = dir.filePath("s.csv"), hist = dir.filePath("h.csv"),
                       init = dir.filePath("i.csv"), fin = dir.filePath("f.csv");
-        const auto r = cli({"run", "gas-seed", "--steps", "200", "--every", "50", "--threads", "2", "--out",
-                            series, "--histogram", hist, "--dump-initial", init, "--dump-final", fin});
+        const auto r =
+            cli({"run", "gas-write-up", "--steps", "200", "--every", "50", "--threads", "2", "--out", series,
+                 "--histogram", hist, "--dump-initial", init, "--dump-final", fin});
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
         const QStringList rows = readLines(series);
         QCOMPARE(rows.size(), 1 + 5); // header, steps 0, 50, 100, 150, 200
@@ -157,7 +170,7 @@ private slots:
         QCOMPARE(readLines(init).size(), 4097);
         QCOMPARE(readLines(fin)[0], QString("id,species,x,y,vx,vy"));
         QVERIFY(readLines(hist)[1].startsWith("speed_a,0,"));
-        // The initial dump is the seed's start: speed 1 everywhere.
+        // The initial dump is the write-up's start: speed 1 everywhere.
         const QStringList first = readLines(init)[1].split(',');
         QVERIFY(std::abs(std::hypot(first[4].toDouble(), first[5].toDouble()) - 1.0) < 1e-12);
     }
@@ -193,19 +206,24 @@ private slots:
         QTest::addColumn<QString>("message");
         QTest::newRow("unknown preset")
             << QStringList{"run", "no-such-preset"} << 2 << "neither a built-in preset";
-        QTest::newRow("unknown key") << QStringList{"run", "gas-seed", "--set", "stifness=3"} << 2
+        QTest::newRow("unknown key") << QStringList{"run", "gas-write-up", "--set", "stifness=3"} << 2
                                      << "unknown parameter 'stifness'";
+        QTest::newRow("renamed key") << QStringList{"run", "gas-write-up", "--set", "tool_speed=3"} << 2
+                                     << "'tool_speed' is called 'tool_speed_factor'";
+        QTest::newRow("renamed choice") << QStringList{"run", "dsmc-bkw", "--set", "cross_section=seed"} << 2
+                                        << "\"seed\" is called \"inverse-root\"";
         QTest::newRow("out of range")
-            << QStringList{"run", "gas-seed", "--set", "dt=5"} << 2 << "[-1, 1] except 0 T";
-        QTest::newRow("nan") << QStringList{"run", "gas-seed", "--set", "stiffness=nan"} << 2
+            << QStringList{"run", "gas-write-up", "--set", "dt=5"} << 2 << "[-1, 1] except 0 T";
+        QTest::newRow("nan") << QStringList{"run", "gas-write-up", "--set", "stiffness=nan"} << 2
                              << "must be finite";
-        QTest::newRow("wrong type") << QStringList{"run", "gas-seed", "--set", "count_a=many"} << 2
+        QTest::newRow("wrong type") << QStringList{"run", "gas-write-up", "--set", "count_a=many"} << 2
                                     << "must be an integer";
-        QTest::newRow("not key=value") << QStringList{"run", "gas-seed", "--set", "dt"} << 2 << "key=value";
-        QTest::newRow("too many") << QStringList{"run", "gas-seed", "--set", "count_a=2000000"} << 2
+        QTest::newRow("not key=value")
+            << QStringList{"run", "gas-write-up", "--set", "dt"} << 2 << "key=value";
+        QTest::newRow("too many") << QStringList{"run", "gas-write-up", "--set", "count_a=2000000"} << 2
                                   << "exceeds max_particles";
-        QTest::newRow("unwritable") << QStringList{"run", "gas-seed", "--steps",
-                                                   "1",   "--out",    "/nonexistent/s.csv"}
+        QTest::newRow("unwritable") << QStringList{"run", "gas-write-up", "--steps",
+                                                   "1",   "--out",        "/nonexistent/s.csv"}
                                     << 4 << "/nonexistent/s.csv";
     }
     void badInputsNameTheProblem() {

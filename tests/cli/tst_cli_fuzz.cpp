@@ -43,7 +43,7 @@ const std::vector<Scene>& scenes() {
          {"count_a=300"},
          {"count_a", "fn", "dt", "cell_volume", "cross_section", "initial", "temperature",
           "velocity_components", "histogram_bins", "sigma_cr_max_init"}},
-        {"dsmc-seed",
+        {"dsmc-write-up",
          "dsmc",
          {"count_a=200", "count_b=200"},
          {"count_b", "drift_a", "drift_b", "mass_amu", "fn", "dt"}},
@@ -165,7 +165,7 @@ private:
         if (chance(0.2)) params += QString(", \"%1\": 1").arg(key); // a duplicate
         QString json =
             QString(R"({"schema": %1, "model": "%2", "seed": %3, "params": {%4}, "obstacles": %5})")
-                .arg(chance(0.9) ? "2" : nasty(), chance(0.9) ? scene.model : "liquid",
+                .arg(chance(0.9) ? "3" : nasty(), chance(0.9) ? scene.model : "liquid",
                      chance(0.9) ? QString::number(pick(1000)) : nasty(), params,
                      chance(0.8) ? "[]"
                                  : R"([{"shape": "disc", "x": 0, "y": 0, "radius": )" + value() + "}]");

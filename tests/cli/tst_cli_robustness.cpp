@@ -62,7 +62,7 @@ private slots:
     void badOptionsAreExit2WithASentence_data() {
         QTest::addColumn<QStringList>("args");
         QTest::addColumn<QString>("message");
-        const QStringList run{"run", "gas-seed", "--quiet"};
+        const QStringList run{"run", "gas-write-up", "--quiet"};
         QTest::newRow("threads 0") << run + QStringList{"--threads", "0"} << "--threads: must be from 1 to";
         QTest::newRow("threads 5000") << run + QStringList{"--threads", "5000"} << "4 × the";
         QTest::newRow("threads 100000")
@@ -77,7 +77,8 @@ private slots:
         QTest::newRow("unknown flag") << run + QStringList{"--bogus"} << "not expected: --bogus";
         QTest::newRow("no subcommand") << QStringList{} << "A subcommand is required";
         QTest::newRow("empty out") << run + QStringList{"--out", ""} << "--out: needs a file name";
-        QTest::newRow("bench repeats") << QStringList{"bench", "gas-seed", "--repeats", "0"} << "--repeats";
+        QTest::newRow("bench repeats")
+            << QStringList{"bench", "gas-write-up", "--repeats", "0"} << "--repeats";
         QTest::newRow("relax particles") << QStringList{"relax", "--particles", "2"} << "from 4 to";
         QTest::newRow("stiffness 0") << QStringList{"sweep", "--stiffness", "0"} << "above 0";
         QTest::newRow("set with space")
@@ -188,7 +189,7 @@ private slots:
                      r.err.contains("use dt ≤ 8.33e-05 s") && r.err.contains("fn ≤"),
                  qPrintable(r.err));
         const auto huge =
-            runCli({"run", "dsmc-seed", "--set", "fn=9223372036854775807", "--steps", "1"}, 30000);
+            runCli({"run", "dsmc-write-up", "--set", "fn=9223372036854775807", "--steps", "1"}, 30000);
         QCOMPARE(huge.exitCode, 2);
         QVERIFY(clock.elapsed() < 20000); // refused before any step, not after a 27 s one
     }
@@ -210,7 +211,7 @@ private slots:
         QVERIFY(::chmod(target.toUtf8().constData(), 0600) == 0 &&
                 ::chmod(hist.toUtf8().constData(), 0640) == 0);
         QVERIFY(QFile::link(target, link) && QFile::link(hist, histLink));
-        const auto r = runCli({"run", "gas-seed", "--steps", "2", "--every", "1", "--out", link,
+        const auto r = runCli({"run", "gas-write-up", "--steps", "2", "--every", "1", "--out", link,
                                "--histogram", histLink, "--quiet"});
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
         QVERIFY(QFileInfo(link).isSymLink() && QFileInfo(histLink).isSymLink()); // links stay links
@@ -231,7 +232,7 @@ private slots:
         clock.start();
         for (const QString& path : {fifo, QString("/dev/null"), dir.path(), QString("/nonexistent/s.csv")})
             for (const char* option : {"--out", "--histogram", "--dump-final"}) {
-                const auto r = runCli({"run", "gas-seed", "--steps", "1000000000", option, path}, 20000);
+                const auto r = runCli({"run", "gas-write-up", "--steps", "1000000000", option, path}, 20000);
                 QVERIFY2(!r.timedOut, qPrintable(path));
                 QCOMPARE(r.exitCode, 4);
                 QVERIFY2(r.err.contains(path), qPrintable(r.err));
@@ -250,7 +251,7 @@ private slots:
         QVERIFY(
             old.setFileTime(QDateTime::currentDateTime().addSecs(-3600), QFileDevice::FileModificationTime));
         old.close();
-        QCOMPARE(runCli({"run", "gas-seed", "--steps", "1", "--histogram", hist, "--quiet"}).exitCode, 0);
+        QCOMPARE(runCli({"run", "gas-write-up", "--steps", "1", "--histogram", hist, "--quiet"}).exitCode, 0);
         QVERIFY(!QFileInfo::exists(stale));
         QVERIFY(QFileInfo::exists(fresh));     // may belong to a writer that is still alive
         QVERIFY(QFileInfo::exists(unrelated)); // not a temporary file's name
@@ -264,7 +265,7 @@ private slots:
         QTemporaryDir dir;
         const QString series = dir.filePath("s.csv");
         QProcess p;
-        p.start(PARTICLELAB_CLI, {"run", "dsmc-seed", "--steps", "100000", "--out", series, "--quiet"});
+        p.start(PARTICLELAB_CLI, {"run", "dsmc-write-up", "--steps", "100000", "--out", series, "--quiet"});
         QVERIFY(p.waitForStarted());
         const QString status = QString("/proc/%1/status").arg(p.processId());
         long long early = 0, peak = 0; // resident kB once a tenth of the rows is written, and the most

@@ -196,11 +196,11 @@ private slots:
     void scenesWithoutFieldsRefuseBeforeWriting_data() {
         QTest::addColumn<QString>("preset");
         QTest::addColumn<QString>("option");
-        QTest::newRow("gas --fields") << "gas-seed"
+        QTest::newRow("gas --fields") << "gas-write-up"
                                       << "--fields";
-        QTest::newRow("gas --surface") << "gas-seed"
+        QTest::newRow("gas --surface") << "gas-write-up"
                                        << "--surface";
-        QTest::newRow("dsmc cell --fields") << "dsmc-seed"
+        QTest::newRow("dsmc cell --fields") << "dsmc-write-up"
                                             << "--fields";
         QTest::newRow("fluid --surface") << "fluid-dam-break"
                                          << "--surface";

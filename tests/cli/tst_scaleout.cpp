@@ -158,10 +158,10 @@ private slots:
             QStringList args;
             const char* message;
         } refusals[] = {
-            {{"gas-seed", "--set", "integrator=rk4"}, "fix nve is velocity Verlet"},
-            {{"gas-seed", "--set", "dt=-1e-4"}, "runs time backwards"},
-            {{"gas-seed", "--set", "wall_mode=thermal"}, "thermal walls"},
-            {{"dsmc-seed"}, "use export sparta"},
+            {{"gas-write-up", "--set", "integrator=rk4"}, "fix nve is velocity Verlet"},
+            {{"gas-write-up", "--set", "dt=-1e-4"}, "runs time backwards"},
+            {{"gas-write-up", "--set", "wall_mode=thermal"}, "thermal walls"},
+            {{"dsmc-write-up"}, "use export sparta"},
             {{"no-such-preset"}, "no-such-preset"},
         };
         for (const auto& refusal : refusals) {
@@ -178,13 +178,13 @@ private slots:
         QVERIFY(!QFile::exists(deck + "/in.lammps")); // a refused deck is not written at all
         QVERIFY(!QFile::exists(deck + "/particlelab.json"));
 
-        const auto gasToSparta = cli({"export", "sparta", "gas-seed", "--out", deck});
+        const auto gasToSparta = cli({"export", "sparta", "gas-write-up", "--out", deck});
         QCOMPARE(gasToSparta.exitCode, 2);
         QVERIFY2(gasToSparta.err.contains("use export lammps"), qPrintable(gasToSparta.err));
         const auto planar = cli({"export", "sparta", "dsmc-planar-beams", "--out", deck});
         QCOMPARE(planar.exitCode, 2);
         QVERIFY2(planar.err.contains("velocity_components"), qPrintable(planar.err));
-        const auto sparta = cli({"export", "sparta", "dsmc-seed", "--out", deck});
+        const auto sparta = cli({"export", "sparta", "dsmc-write-up", "--out", deck});
         QVERIFY2(sparta.exitCode == 0 && sparta.err.contains("omega = 3/4"), qPrintable(sparta.err));
         for (const char* name :
              {"in.sparta", "gas.species", "gas.vss", "particles.sparta", "particlelab.json"})
@@ -206,7 +206,7 @@ private slots:
         QCOMPARE(tunnelToLammps.exitCode, 2);
         QVERIFY2(tunnelToLammps.err.contains("use export sparta"), qPrintable(tunnelToLammps.err));
 
-        const auto unwritable = cli({"export", "lammps", "gas-seed", "--out", "/proc/particlelab-deck"});
+        const auto unwritable = cli({"export", "lammps", "gas-write-up", "--out", "/proc/particlelab-deck"});
         QCOMPARE(unwritable.exitCode, 4);
         const auto missing =
             cli({"import", "lammps", dir.filePath("nothing-here"), "--out", dir.filePath("s.csv")});
@@ -259,12 +259,12 @@ private slots:
         QVERIFY(std::isnan(cell(imported, 1, "pressure_wall")));
     }
 
-    // The seed's soft disks: LAMMPS and our gas agree to round-off over 1000 steps, on 1 and 2 ranks.
+    // The write-up's soft disks: LAMMPS and our gas agree to round-off over 1000 steps, on 1 and 2 ranks.
     void lammpsAgreesWithTheSeedGas() {
         if (!haveLammps()) QSKIP("lmp or mpirun not installed (.ci/install-deps.sh installs them)");
         QTemporaryDir dir;
-        const QStringList preset{"gas-seed",    "--set", "count_a=1024", "--set",
-                                 "box_width=1", "--set", "box_height=1"};
+        const QStringList preset{"gas-write-up", "--set", "count_a=1024", "--set",
+                                 "box_width=1",  "--set", "box_height=1"};
         const QStringList length{"--steps", "1000", "--every", "250"};
         QCOMPARE(
             cli(QStringList{"run"} + preset + length + QStringList{"--quiet", "--out", dir.filePath("s.csv")})
@@ -307,7 +307,7 @@ private slots:
     void runLammpsExportsRunsAndImports() {
         if (!haveLammps()) QSKIP("lmp or mpirun not installed (.ci/install-deps.sh installs them)");
         QTemporaryDir dir;
-        const auto r = cli({"run-lammps", "gas-seed", "--set", "count_a=256", "--set", "box_width=0.5",
+        const auto r = cli({"run-lammps", "gas-write-up", "--set", "count_a=256", "--set", "box_width=0.5",
                             "--set", "box_height=0.5", "--np", "2", "--steps", "200", "--every", "100",
                             "--out", dir.filePath("s.csv"), "--histogram", dir.filePath("h.csv")});
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
@@ -331,8 +331,8 @@ private slots:
         QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
         env.insert("PATH", bin.path() + ":/usr/bin:/bin");
         p.setProcessEnvironment(env);
-        p.start(PARTICLELAB_CLI, {"run-lammps", "gas-seed", "--steps", "10", "--out", bin.filePath("s.csv"),
-                                  "--work", bin.filePath("work")});
+        p.start(PARTICLELAB_CLI, {"run-lammps", "gas-write-up", "--steps", "10", "--out",
+                                  bin.filePath("s.csv"), "--work", bin.filePath("work")});
         QVERIFY(p.waitForFinished(60000));
         const QString err = QString::fromUtf8(p.readAllStandardError());
         QCOMPARE(p.exitCode(), 3);
@@ -342,7 +342,7 @@ private slots:
 
         env.insert("PATH", bin.path() + "/nowhere");
         p.setProcessEnvironment(env);
-        p.start(PARTICLELAB_CLI, {"run-lammps", "gas-seed"});
+        p.start(PARTICLELAB_CLI, {"run-lammps", "gas-write-up"});
         QVERIFY(p.waitForFinished(60000));
         QCOMPARE(p.exitCode(), 2);
         QVERIFY(QString::fromUtf8(p.readAllStandardError()).contains("lmp not found"));

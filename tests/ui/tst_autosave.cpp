@@ -70,7 +70,7 @@ private slots:
         QVERIFY(savedStep > 0);
 
         ui::MainWindow window;
-        QVERIFY(window.openPreset("gas-seed"));
+        QVERIFY(window.openPreset("gas-write-up"));
         test::MessageBoxAnswerer answerer(QMessageBox::Yes);
         const bool restored = window.autosave()->offerRestore();
         QVERIFY2(restored, qPrintable(answerer.texts.join(" / ")));

@@ -1,4 +1,4 @@
-// File → Export to LAMMPS… and File → Open LAMMPS run… under a real X server: a small gas-seed exports
+// File → Export to LAMMPS… and File → Open LAMMPS run… under a real X server: a small gas-write-up exports
 // through the window's code path, refusals write nothing, LAMMPS runs the deck, and the run opens
 // read-only in the docks (series rows, speed histogram with its Maxwell–Boltzmann curve) until a preset
 // is opened again; Simulation → Run on LAMMPS… runs the deck in a worker and opens the result. A
@@ -26,7 +26,7 @@ using namespace pl;
 
 namespace {
 
-constexpr int kDisks = 400; // gas-seed's box and disks, fewer of them: LAMMPS runs the deck in a blink
+constexpr int kDisks = 400; // gas-write-up's box and disks, fewer of them: LAMMPS runs the deck in a blink
 
 bool runLammps(const QString& dir, QString& output) {
     QProcess lmp;
@@ -73,7 +73,7 @@ private slots:
 
     void init() {
         window_ = std::make_unique<ui::MainWindow>();
-        QVERIFY(window_->openPreset("gas-seed"));
+        QVERIFY(window_->openPreset("gas-write-up"));
         QVERIFY(window_->controller()->setParameters({{"count_a", static_cast<double>(kDisks)}}).isEmpty());
         window_->controller()->reset();
         QCOMPARE(window_->controller()->model()->particleCount(), std::size_t(kDisks));
@@ -149,7 +149,7 @@ private slots:
         QVERIFY(window_->windowImage().save(QString(PARTICLELAB_SCREENSHOT_DIR) + "/lammps-run.png"));
 
         // Any preset returns to a running lab.
-        QVERIFY(window_->openPreset("gas-seed"));
+        QVERIFY(window_->openPreset("gas-write-up"));
         QVERIFY(!controller->isReadOnly());
         QVERIFY(play->isEnabled());
         QVERIFY(window_->parameters()->isEnabled());
@@ -172,7 +172,7 @@ private slots:
                  qPrintable(finished.front().front().toString()));
         QVERIFY(window_->controller()->isReadOnly());
         QVERIFY(window_->controller()->series()->rows() > 2);
-        QCOMPARE(window_->controller()->model()->stepCount(), 1000); // gas-seed's open-ended default run
+        QCOMPARE(window_->controller()->model()->stepCount(), 1000); // gas-write-up's open-ended default run
     }
 
     void cancelEndsTheRunAndSaysSo() {

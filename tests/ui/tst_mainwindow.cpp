@@ -103,7 +103,7 @@ private slots:
             window.show();
             QVERIFY(QTest::qWaitForWindowExposed(&window));
             Model* model = window.controller()->model();
-            if (model->particleCount() == 0) // the fluid seed's empty tank: pour a block as a user would
+            if (model->particleCount() == 0) // the fluid write-up's empty tank: pour a block as a user would
                 QVERIFY(model->tools()->spawnInRectangle(10, 2, 40, 12).starts_with("added"));
             runFrames(window, 30);
             QVERIFY(window.controller()->model()->stepCount() > 0);
@@ -115,8 +115,8 @@ private slots:
                 if (!plot->spec().kinds.contains(QString::fromStdString(builtin.preset.model))) continue;
                 raiseDockOf(window, plot); // tabbed-away plots refresh when they are shown
                 QVERIFY(plot->plot()->graphCount() >= 2);
-                // The seed's tank has no dam-break column, so its front plot has nothing to show.
-                if (name == "fluid-seed" && plot->spec().objectName == "frontPlot") continue;
+                // The write-up's tank has no dam-break column, so its front plot has nothing to show.
+                if (name == "fluid-write-up" && plot->spec().objectName == "frontPlot") continue;
                 int filled = 0; // graphs with 10 samples, or a profile of all 5 iterations and the result
                 for (int g = 0; g < plot->plot()->graphCount(); ++g)
                     filled += plot->plot()->graph(g)->visible() && plot->plot()->graph(g)->dataCount() >= 6;
@@ -133,9 +133,9 @@ private slots:
         ui::MainWindow window;
         auto* gravity = window.findChild<QAction*>("gravityAction");
         QVERIFY(gravity);
-        QVERIFY(window.openPreset("gas-seed"));
+        QVERIFY(window.openPreset("gas-write-up"));
         QVERIFY(gravity->isVisible() && gravity->isChecked()); // every scene with gravity has the switch
-        QVERIFY(window.openPreset("dsmc-seed"));
+        QVERIFY(window.openPreset("dsmc-write-up"));
         QVERIFY(!gravity->isVisible()); // a DSMC cell has no gravity
         QVERIFY(window.openPreset("fluid-dam-break"));
         QVERIFY(gravity->isVisible() && gravity->isChecked());
@@ -153,9 +153,17 @@ private slots:
         QVERIFY(gravity->isChecked());
     }
 
+    // A preset's old name opens the preset it is now (the write-up's scenes were named "-seed").
+    void oldPresetNamesOpenTheRenamedPreset() {
+        ui::MainWindow window;
+        QVERIFY(window.openPreset("dsmc-seed"));
+        QCOMPARE(window.document()->title(), QString("dsmc-write-up"));
+        QCOMPARE(window.controller()->model()->kind(), std::string("dsmc"));
+    }
+
     void negativeSpeedRunsTimeBackwards() {
         ui::MainWindow window;
-        QVERIFY(window.openPreset("gas-seed"));
+        QVERIFY(window.openPreset("gas-write-up"));
         auto* controller = window.controller();
         const GasState start = static_cast<const GasModel*>(controller->model())->state();
         controller->setStepsPerFrame(5);
@@ -377,7 +385,7 @@ private slots:
             visible += moments->plot()->graph(g)->visible();
         QCOMPARE(visible, 7); // M4, M6, M8, their exact curves, and the KL divergence
 
-        QVERIFY(window.openPreset("gas-seed")); // back to the gas: its docks return
+        QVERIFY(window.openPreset("gas-write-up")); // back to the gas: its docks return
         QVERIFY(!window.findChild<QDockWidget*>("energyPlotDock")->isHidden());
         QVERIFY(window.findChild<QDockWidget*>("momentsPlotDock")->isHidden());
     }
@@ -385,14 +393,14 @@ private slots:
     void dockLayoutPersists() {
         {
             ui::MainWindow window;
-            QVERIFY(window.openPreset("gas-seed"));
+            QVERIFY(window.openPreset("gas-write-up"));
             window.show();
             QVERIFY(QTest::qWaitForWindowExposed(&window));
             window.findChild<QDockWidget*>("speedHistogramDock")->hide();
             window.close();
         }
         ui::MainWindow reopened;
-        QVERIFY(reopened.openPreset("gas-seed"));
+        QVERIFY(reopened.openPreset("gas-write-up"));
         reopened.show();
         QVERIFY(QTest::qWaitForWindowExposed(&reopened));
         QVERIFY(!reopened.findChild<QDockWidget*>("speedHistogramDock")->isVisible());

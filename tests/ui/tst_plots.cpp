@@ -105,7 +105,7 @@ private slots:
         QVERIFY(QTest::qWaitForWindowExposed(&window));
         window.setProjectorMode(projector);
         Model* model = window.controller()->model();
-        if (model->particleCount() == 0) // the fluid seed's empty tank: pour a block as a user would
+        if (model->particleCount() == 0) // the fluid write-up's empty tank: pour a block as a user would
             model->tools()->spawnInRectangle(10, 2, 40, 12);
         runFrames(window, 24); // 8 samples: every plot has curves to place its legend beside
         QStringList failures;

@@ -130,7 +130,7 @@ private slots:
     void viewportKeepsItsRoom_data() {
         QTest::addColumn<QString>("preset");
         QTest::addColumn<QSize>("size");
-        for (const QString preset : {"gas-classroom", "dsmc-seed", "fluid-obstacle"})
+        for (const QString preset : {"gas-classroom", "dsmc-write-up", "fluid-obstacle"})
             for (QSize size : {QSize(1024, 700), QSize(1280, 800), QSize(1920, 1080)})
                 QTest::newRow(
                     qPrintable(QString("%1 %2x%3").arg(preset).arg(size.width()).arg(size.height())))
@@ -250,7 +250,7 @@ private slots:
 
     void fluidPoursAndChoosesTheSpawnTool() {
         ui::MainWindow window;
-        QVERIFY(window.openPreset("fluid-seed")); // an empty tank
+        QVERIFY(window.openPreset("fluid-write-up")); // an empty tank
         showAt(window, {1280, 800});
         window.presentMode()->setActive(true);
         QTest::qWait(50);
@@ -274,7 +274,7 @@ private slots:
 
     void dsmcRunsAndResets() {
         ui::MainWindow window;
-        QVERIFY(window.openPreset("dsmc-seed"));
+        QVERIFY(window.openPreset("dsmc-write-up"));
         showAt(window, {1280, 800});
         window.presentMode()->setActive(true);
         QTest::qWait(50);

@@ -302,7 +302,7 @@ private slots:
 
     void dragAndParticleDocksFollowTheTunnel() {
         ui::MainWindow window;
-        QVERIFY(window.openPreset("gas-seed"));
+        QVERIFY(window.openPreset("gas-write-up"));
         QVERIFY(test::showActive(window));
         auto* profileDock = window.findChild<QDockWidget*>("profileDock");
         QVERIFY(!profileDock->toggleViewAction()->isEnabled()); // no sampled fields in the gas

@@ -1,6 +1,6 @@
 // The Drag tool through real mouse events on the viewport while time runs: the disc goes where the hand
 // took it, at the tool speed, and the gas's kT hardly changes, at 1 and at 20 steps per frame; in the
-// fluid seed a drag in empty space pours; screenshots before and after the drag are saved to look at.
+// fluid write-up a drag in empty space pours; screenshots before and after the drag are saved to look at.
 #include "MainWindow.h"
 #include "SimulationController.h"
 #include "fluid/FluidModel.h"
@@ -104,7 +104,7 @@ private slots:
 
     void draggingEmptySpaceInTheFluidSeedPours() {
         ui::MainWindow window;
-        QVERIFY(window.openPreset("fluid-seed"));
+        QVERIFY(window.openPreset("fluid-write-up"));
         window.resize(1280, 800);
         window.show();
         QVERIFY(QTest::qWaitForWindowExposed(&window));

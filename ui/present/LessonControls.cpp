@@ -26,7 +26,7 @@ constexpr double kPourFraction = 0.04; // side of the poured block, as a fractio
 constexpr double kCountRange = 2.0;    // the particle slider reaches twice the scene's starting N
 constexpr double kMaxPacking = 0.4;    // … but never past 40 % of the box covered by disks
 constexpr double kGravityScale = 5.0;  // gas: the strongest gravity makes the scale height H / 5
-constexpr double kFluidGravity = 9.8;  // fluid: the seed's g; the slider reaches twice it
+constexpr double kFluidGravity = 9.8;  // fluid: the write-up's g; the slider reaches twice it
 
 const char* kStyle = "QPushButton { padding: 10px 8px; }"
                      "QPushButton:checked { background: #2a5aaa; color: white; }"

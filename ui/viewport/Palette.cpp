@@ -1,4 +1,4 @@
-// Palette stops: the thermal one as in the gas seed's WGSL palette(); blue → red as in the fluid seed
+// Palette stops: the thermal one as in the gas write-up's WGSL palette(); blue → red as in the fluid write-up
 // (red = 255·s, blue = 255·(1 − s), no green); categories chosen to stay apart for colour-blind viewers.
 #include "Palette.h"
 

@@ -1,4 +1,4 @@
-// Colour maps of the scenes: the gas seed's 10-stop thermal palette, the fluid seed's blue → red, and
+// Colour maps of the scenes: the gas write-up's 10-stop thermal palette, the fluid write-up's blue → red, and
 // distinct colours for categories (species, beams). Shared by the CPU painter, the GL shader and legends.
 #pragma once
 

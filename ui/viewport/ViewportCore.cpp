@@ -332,7 +332,7 @@ void ViewportCore::paintOverlay(QPainter& painter) const {
     }
     if (!scene_.xLabel.empty() || !scene_.yLabel.empty()) paintAxes(painter, transform_, scene_, box);
     if (!scene_.hint.empty()) {
-        // The seed's faint instruction: large, bold, 20 % opaque, out of the way once there is fluid.
+        // The write-up's faint instruction: large, bold, 20 % opaque, out of the way once there is fluid.
         QFont font = painter.font();
         font.setBold(true);
         font.setPointSizeF(font.pointSizeF() * 2.2);
@@ -363,7 +363,7 @@ void ViewportCore::paintOverlay(QPainter& painter) const {
         painter.setPen(QPen(kWalls, gesture_ == Gesture::DragPiston ? 6 : 4));
         painter.drawLine(QPointF(x, box.top()), QPointF(x, box.bottom()));
     }
-    if (gesture_ == Gesture::Rectangle || gesture_ == Gesture::Pour) { // the seed's spawn preview
+    if (gesture_ == Gesture::Rectangle || gesture_ == Gesture::Pour) { // the write-up's spawn preview
         painter.setPen(QPen(QColor(255, 255, 255, 200), 1, Qt::DashLine));
         painter.setBrush(tool_ == ViewportTool::Spawn || gesture_ == Gesture::Pour
                              ? QColor(255, 255, 255, 60)

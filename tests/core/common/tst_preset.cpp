@@ -39,15 +39,15 @@ private slots:
             names << QString::fromStdString(p.name);
             QVERIFY2(!p.preset.description.empty(), p.name.c_str());
             auto model = instantiate(p.preset);
-            // Every preset starts with particles but the fluid seed's tank, which waits to be poured.
-            QVERIFY2(model->particleCount() > 0 || p.name == "fluid-seed", p.name.c_str());
+            // Every preset starts with particles but the fluid write-up's tank, which waits to be poured.
+            QVERIFY2(model->particleCount() > 0 || p.name == "fluid-write-up", p.name.c_str());
         }
-        for (const char* required : {"gas-seed", "gas-classroom", "gas-mixture"})
+        for (const char* required : {"gas-write-up", "gas-classroom", "gas-mixture"})
             QVERIFY(names.contains(required));
     }
 
-    void seedPresetIsTheSeed() {
-        const Preset p = loadPreset("gas-seed");
+    void writeUpPresetIsTheWriteUp() {
+        const Preset p = loadPreset("gas-write-up");
         auto model = instantiate(p);
         const auto& md = static_cast<const GasModel&>(*model).parameters();
         QCOMPARE(md.totalCount(), 4096LL);
@@ -116,8 +116,8 @@ private slots:
     }
 
     void unsupportedSchema() {
-        const QString m = errorOf(R"({"schema": 3, "model": "gas"})");
-        QVERIFY2(m.contains("schema 3 is not supported"), qPrintable(m));
+        const QString m = errorOf(R"({"schema": 4, "model": "gas"})");
+        QVERIFY2(m.contains("schema 4 is not supported"), qPrintable(m));
     }
 
     void unknownModel() { QVERIFY(errorOf(R"({"schema": 1, "model": "plasma"})").contains("unknown model")); }

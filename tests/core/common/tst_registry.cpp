@@ -92,7 +92,7 @@ private slots:
         fluid.obstacles.back().radius = 5;
         Preset spaced = loadPreset("fluid-dam-break");
         spaced.params["spawn_spacing"] = 0.7;
-        Preset dsmc = loadPreset("dsmc-seed");
+        Preset dsmc = loadPreset("dsmc-write-up");
         dsmc.params["count_a"] = 500.0;
         for (const Preset* preset : {&gas, &fluid, &spaced, &dsmc}) {
             const auto model = instantiate(*preset);
@@ -103,7 +103,7 @@ private slots:
                                          static_cast<std::size_t>(std::get<double>(
                                              loadPreset("gas-mixture").params.at("count_a"))));
         QVERIFY(particleCount(fluid) < particleCount(loadPreset("fluid-obstacle")));
-        Preset bad = loadPreset("gas-seed");
+        Preset bad = loadPreset("gas-write-up");
         bad.params["count_a"] = -1.0;
         QVERIFY_THROWS_EXCEPTION(PresetError, particleCount(bad));
     }

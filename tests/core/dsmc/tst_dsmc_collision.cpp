@@ -1,5 +1,5 @@
 // One DSMC collision conserves momentum and energy to round-off and scatters isotropically; a whole run
-// conserves them too, and the seed run ends at 17.83 K with mean velocity 200 m/s. The molecule's
+// conserves them too, and the write-up run ends at 17.83 K with mean velocity 200 m/s. The molecule's
 // parameters are one table for the cell and the wind tunnel.
 #include "catalog/ModelCatalog.h"
 #include "common/Philox.h"
@@ -66,7 +66,7 @@ private slots:
     }
 
     void theSeedRunEndsAtTheAnalyticTemperature() {
-        auto model = instantiate(loadPreset("dsmc-seed"));
+        auto model = instantiate(loadPreset("dsmc-write-up"));
         auto* dsmc = static_cast<DsmcModel*>(model.get());
         const DsmcObservables start = dsmc->observe();
         // Moment-matched beams: T = (T_x + 2 · 5 K)/3 with T_x = 5 K + m (100 m/s)² / k = 43.49 K.
@@ -85,8 +85,8 @@ private slots:
     }
 
     void runsAreReproducible() {
-        auto a = instantiate(loadPreset("dsmc-seed"));
-        auto b = instantiate(loadPreset("dsmc-seed"));
+        auto a = instantiate(loadPreset("dsmc-write-up"));
+        auto b = instantiate(loadPreset("dsmc-write-up"));
         for (int s = 0; s < 200; ++s) {
             a->step();
             b->step();
@@ -97,7 +97,7 @@ private slots:
         a->reset();
         for (int s = 0; s < 200; ++s) a->step();
         QVERIFY(static_cast<DsmcModel*>(a.get())->state().vx == sb.vx);
-        Preset other = loadPreset("dsmc-seed");
+        Preset other = loadPreset("dsmc-write-up");
         other.seed += 1;
         auto c = instantiate(other);
         for (int s = 0; s < 200; ++s) c->step();

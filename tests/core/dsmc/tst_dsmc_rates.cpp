@@ -1,6 +1,6 @@
 // Accepted collisions per step at equilibrium match N ν Δt / 2
-// (docs/dsmc.md#cross-sections-and-collision-frequency) for every cross-section model, including the seed's;
-// the Maxwell-molecule anisotropy decays at ν/2; the BKW moments follow the exact curves.
+// (docs/dsmc.md#cross-sections-and-collision-frequency) for every cross-section model, including the
+// write-up's; the Maxwell-molecule anisotropy decays at ν/2; the BKW moments follow the exact curves.
 #include "dsmc/DsmcModel.h"
 #include "dsmc/DsmcTheory.h"
 
@@ -31,7 +31,7 @@ class TestDsmcRates : public QObject {
 private slots:
     void acceptedCollisionsMatchTheEquilibriumRate_data() {
         QTest::addColumn<QString>("crossSection");
-        QTest::newRow("seed") << "seed";
+        QTest::newRow("inverse-root") << "inverse-root";
         QTest::newRow("hard-sphere") << "hard-sphere";
         QTest::newRow("vhs") << "vhs";
         QTest::newRow("maxwell") << "maxwell";

@@ -30,7 +30,7 @@ private slots:
     }
 
     void unmeasurableCellsAreClassified() {
-        const dsmc::DsmcCell wrongStart = dsmc::runDsmcCell(loadPreset("dsmc-seed"), 1000, 0.1);
+        const dsmc::DsmcCell wrongStart = dsmc::runDsmcCell(loadPreset("dsmc-write-up"), 1000, 0.1);
         QCOMPARE(wrongStart.status.outcome, CellOutcome::Rejected);
         QVERIFY(wrongStart.status.detail.find("BKW") != std::string::npos);
         const dsmc::DsmcCell one = dsmc::runDsmcCell(loadPreset("dsmc-bkw"), 1, 0.1);

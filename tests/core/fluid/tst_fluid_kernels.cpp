@@ -1,5 +1,5 @@
 // The PBF kernels (docs/fluid.md#kernel-normalisation): the 2D constants integrate to 1 over the plane, the
-// seed's 3D ones to 315/(256 h) and 3/(2 h); the spiky gradient is the derivative of the spiky kernel and
+// write-up's 3D ones to 315/(256 h) and 3/(2 h); the spiky gradient is the derivative of the spiky kernel and
 // antisymmetric in the pair; s_corr is −k at r = Δq h.
 #include "fluid/FluidKernels.h"
 #include "fluid/FluidParams.h"
@@ -31,14 +31,14 @@ class TestFluidKernels : public QObject {
 private slots:
     void twoDimensionalConstantsIntegrateToOne_data() {
         QTest::addColumn<double>("h");
-        QTest::newRow("seed h") << 1.1;
+        QTest::newRow("write-up h") << 1.1;
         QTest::newRow("small") << 0.25;
         QTest::newRow("large") << 3.0;
     }
     void twoDimensionalConstantsIntegrateToOne() {
         QFETCH(double, h);
         const auto k = fluid::Kernels::make(h, FluidKernelConstants::Normalised2d, true);
-        // W at r = 0 through the self weight (pairs at r = 0 weigh nothing, as in the seed).
+        // W at r = 0 through the self weight (pairs at r = 0 weigh nothing, as in the write-up).
         const auto poly6 = [&](double r) { return r > 0 ? k.w(r * r) : k.selfWeight(); };
         QVERIFY(std::abs(integrateOverDisc(poly6, h) - 1.0) < 1e-9);
         QVERIFY(std::abs(integrateOverDisc([&](double r) { return k.wSpiky(r); }, h) - 1.0) < 1e-9);
@@ -46,15 +46,15 @@ private slots:
 
     void seedConstantsAreTheThreeDimensionalOnes() {
         const double h = 1.1;
-        const auto k = fluid::Kernels::make(h, FluidKernelConstants::Seed3d, true);
+        const auto k = fluid::Kernels::make(h, FluidKernelConstants::Unnormalised3d, true);
         const auto poly6 = [&](double r) { return r > 0 ? k.w(r * r) : k.selfWeight(); };
         QVERIFY(std::abs(integrateOverDisc(poly6, h) - 315.0 / (256.0 * h)) < 1e-9);
         QVERIFY(std::abs(integrateOverDisc([&](double r) { return k.wSpiky(r); }, h) - 1.5 / h) < 1e-9);
-        // The seed's code: poly6Value(r) = 315/(64π) ((h² − r²)/h³)³.
+        // The write-up's code: poly6Value(r) = 315/(64π) ((h² − r²)/h³)³.
         const double r = 0.6;
         const double x = (h * h - r * r) / (h * h * h);
         QCOMPARE(k.w(r * r), 315.0 / (64.0 * std::numbers::pi) * x * x * x);
-        QCOMPARE(fluid::Kernels::make(h, FluidKernelConstants::Seed3d, false).selfWeight(), 0.0);
+        QCOMPARE(fluid::Kernels::make(h, FluidKernelConstants::Unnormalised3d, false).selfWeight(), 0.0);
         QCOMPARE(k.w(0.0), 0.0);
         QCOMPARE(k.w(h * h), 0.0);
     }
@@ -62,7 +62,7 @@ private slots:
     void spikyGradientIsTheKernelsDerivative_data() {
         QTest::addColumn<QString>("normalisation");
         QTest::newRow("2d") << "2d";
-        QTest::newRow("seed-3d") << "seed-3d";
+        QTest::newRow("3d") << "3d";
     }
     void spikyGradientIsTheKernelsDerivative() {
         QFETCH(QString, normalisation);
@@ -93,7 +93,7 @@ private slots:
 
     void artificialPressureIsMinusKAtTheReferenceDistance() {
         const double h = 1.1;
-        const auto k = fluid::Kernels::make(h, FluidKernelConstants::Seed3d, false);
+        const auto k = fluid::Kernels::make(h, FluidKernelConstants::Unnormalised3d, false);
         const double dq = 0.3 * h;
         fluid::ArtificialPressure s{0.001, 1.0 / k.w(dq * dq), 4};
         QVERIFY(std::abs(s(k.w(dq * dq)) + 0.001) < 1e-15);

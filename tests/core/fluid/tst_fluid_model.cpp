@@ -35,7 +35,7 @@ double meanVx(const FluidModel& model) {
 // energy per particle seen until it rests.
 double peakKineticDuringDrag(int stepsPerFrame, std::optional<double> toolSpeed) {
     Preset p = loadPreset("fluid-obstacle");
-    if (toolSpeed) p.params["tool_speed"] = *toolSpeed;
+    if (toolSpeed) p.params["tool_speed_factor"] = *toolSpeed;
     FluidModel model;
     model.reset(p);
     for (int s = 0; s < 50; ++s) model.step();
@@ -208,9 +208,9 @@ private slots:
             still.step();
             dragged.step();
         }
-        // Dragged towards the far wall at a tool speed of 10 L/s (tool_speed is in units of √(g H)).
+        // Dragged towards the far wall at a tool speed of 10 L/s (tool_speed_factor is in units of √(g H)).
         const double speed = 10.0;
-        dragged.setParams({{"tool_speed", speed / dragged.parameters().waveSpeed()}});
+        dragged.setParams({{"tool_speed_factor", speed / dragged.parameters().waveSpeed()}});
         QVERIFY(std::abs(dragged.toolSpeed() - speed) < 1e-12);
         dragged.dragObstacle(0, 39.0, 6.0);
         for (int s = 0; s < 40; ++s) {
@@ -259,9 +259,9 @@ private slots:
         QVERIFY(positions[0] == positions[1]);
     }
 
-    void seedPresetIsTheSeed() {
+    void writeUpPresetIsTheWriteUp() {
         FluidModel model;
-        model.reset(loadPreset("fluid-seed"));
+        model.reset(loadPreset("fluid-write-up"));
         QCOMPARE(model.particleCount(), std::size_t(0));
         QCOMPARE(model.restDensity(), 1.0);
         const SceneView view = model.sceneView();

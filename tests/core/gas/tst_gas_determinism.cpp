@@ -31,8 +31,8 @@ private slots:
     void bitIdenticalAcrossThreadCounts_data() {
         QTest::addColumn<QString>("preset");
         QTest::addColumn<QString>("integrator");
-        QTest::newRow("seed, verlet") << "gas-seed"
-                                      << "velocity-verlet";
+        QTest::newRow("write-up, verlet") << "gas-write-up"
+                                          << "velocity-verlet";
         QTest::newRow("mixture, rk4") << "gas-mixture"
                                       << "rk4";
         QTest::newRow("mixture, forest-ruth") << "gas-mixture"

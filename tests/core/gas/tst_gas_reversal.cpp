@@ -37,11 +37,11 @@ class TestGasReversal : public QObject {
     Q_OBJECT
 private slots:
     void seedGasRetracesItsPath() {
-        // The seed's soft disks: each moves 0.04 (4 diameters) in 400 steps, many hit the walls, few
+        // The write-up's soft disks: each moves 0.04 (4 diameters) in 400 steps, many hit the walls, few
         // bounce off each other, so round-off (1e-16 of positions of order 1) barely grows: measured
         // 9e-17. The bound 1e-14 leaves a factor 100.
         GasModel model;
-        model.reset(loadPreset("gas-seed"));
+        model.reset(loadPreset("gas-write-up"));
         const double error = returnError(model, 400);
         QVERIFY2(error < 1e-14, qPrintable(QString::number(error)));
         QCOMPARE(model.stepCount(), 800LL);

@@ -29,7 +29,7 @@ GasModel pistonGas(double pistonSpeed) {
                           {"init_velocity", std::string("maxwell-boltzmann")},
                           {"init_kT", 0.5},
                           {"piston_enabled", true},
-                          {"piston_speed", pistonSpeed}});
+                          {"piston_speed_factor", pistonSpeed}});
 }
 
 constexpr double kSlow = 0.02, kFast = 1.0; // piston speeds [× rms speed]
@@ -76,7 +76,7 @@ const GasModel& relaxedClassroomWithDisc() {
 // each, then let go and wait until the disc rests. Returns kT after / kT before.
 double dragAcross(int stepsPerFrame, int frames, std::optional<double> toolSpeed = {}) {
     GasModel model = relaxedClassroomWithDisc();
-    if (toolSpeed) model.setParams({{"tool_speed", *toolSpeed}});
+    if (toolSpeed) model.setParams({{"tool_speed_factor", *toolSpeed}});
     const double before = model.observe().kT;
     const double x0 = -0.6, x1 = 0.6;
     for (int f = 1; f <= frames; ++f) {
@@ -105,7 +105,7 @@ private slots:
     }
 
     void draggedObstacleMovesAtTheToolSpeed() {
-        GasModel model = emptyBox({{"tool_speed", 0.5}}); // × the initial speed 1
+        GasModel model = emptyBox({{"tool_speed_factor", 0.5}}); // × the initial speed 1
         model.addObstacle({Obstacle::Shape::Disc, -0.5, 0.0, 0.1});
         QCOMPARE(model.toolSpeed(), 0.5);
         model.dragObstacle(0, 0.5, 0.0); // a jump of one box half-width in one "frame"
@@ -144,7 +144,7 @@ private slots:
 
     void draggedObstacleImpartsItsVelocity() {
         // A disk at rest struck by a wall moving at u leaves at 2u (elastic reflection off a massive wall).
-        GasModel model = emptyBox({{"tool_speed", 0.5}});
+        GasModel model = emptyBox({{"tool_speed_factor", 0.5}});
         model.addObstacle({Obstacle::Shape::Box, -0.2, 0.0, 0.1, 0.1, 0.2});
         model.placeParticles({{0.0, 0.0, 0.0, 0.0, 0}});
         model.dragObstacle(0, 0.5, 0.0); // reaches the disk after ≈ 160 steps
@@ -176,7 +176,7 @@ private slots:
         // Without the bound (a disc five times as fast as the rms speed, as one that kept up with the mouse
         // at 1 step per frame) the same movement shock-heats the gas.
         const double unbounded = dragAcross(1, 30, 5.0);
-        qInfo("kT after / before at tool_speed 5: %.4f", unbounded);
+        qInfo("kT after / before at tool_speed_factor 5: %.4f", unbounded);
         QVERIFY2(unbounded > 1.2, qPrintable(QString::number(unbounded)));
     }
 
@@ -210,7 +210,7 @@ private slots:
     }
 
     void drivenPistonStopsAtTheEnds() {
-        GasModel model = emptyBox({{"count_a", 0.0}, {"piston_enabled", true}, {"piston_speed", 1.0}});
+        GasModel model = emptyBox({{"count_a", 0.0}, {"piston_enabled", true}, {"piston_speed_factor", 1.0}});
         model.drivePiston(+1); // already at the right wall: nothing to do
         model.step();
         QCOMPARE(model.pistonDirection(), 0);
@@ -221,7 +221,7 @@ private slots:
         // A dense gas stops it where the disks would cover 70 % of the area, before they jam.
         Preset classroom = loadPreset("gas-classroom");
         classroom.params["piston_enabled"] = true;
-        classroom.params["piston_speed"] = 0.3;
+        classroom.params["piston_speed_factor"] = 0.3;
         GasModel dense;
         dense.reset(classroom);
         dense.drivePiston(-1);

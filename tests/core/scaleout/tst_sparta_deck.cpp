@@ -42,8 +42,8 @@ class TestSpartaDeck : public QObject {
 private slots:
     // Each model's σ c_r through SPARTA's formula equals ours at every relative speed.
     void crossSectionsMapExactly() {
-        for (const char* model : {"seed", "hard-sphere", "vhs", "maxwell"}) {
-            const auto cell = cellFor("dsmc-seed", {{"cross_section", std::string(model)}});
+        for (const char* model : {"inverse-root", "hard-sphere", "vhs", "maxwell"}) {
+            const auto cell = cellFor("dsmc-write-up", {{"cross_section", std::string(model)}});
             const auto vss = scaleout::vssParameters(cell->parameters(), cell->collisionModel());
             QCOMPARE(vss.alpha, 1.0);
             for (double cr : {10.0, 137.0, 400.0, 2500.0}) {
@@ -52,15 +52,15 @@ private slots:
                 QVERIFY2(std::abs(theirs - ours) <= 1e-12 * ours, model);
             }
         }
-        // The seed's σ = 1e-18 c_r^-½ is VHS with ω = 3/4 and d_ref = 1.1259e-10 m at T_ref = 273 K (O2).
-        const auto seed = cellFor("dsmc-seed");
+        // The write-up's σ = 1e-18 c_r^-½ is VHS with ω = 3/4 and d_ref = 1.1259e-10 m at T_ref = 273 K (O2).
+        const auto seed = cellFor("dsmc-write-up");
         const auto vss = scaleout::vssParameters(seed->parameters(), seed->collisionModel());
         QCOMPARE(vss.omega, 0.75);
         QVERIFY(std::abs(vss.diameter - 1.12586e-10) < 1e-15);
     }
 
     void deckUsesSpartasDocumentedCommands() {
-        const auto cell = cellFor("dsmc-seed");
+        const auto cell = cellFor("dsmc-write-up");
         const auto deck = scaleout::spartaDeck(*cell, {500, 1});
         // Every command line has the argument count SPARTA's documentation gives it.
         const std::map<std::string, std::pair<std::size_t, std::size_t>> arity{
@@ -113,7 +113,7 @@ private slots:
     // read_particles wants a dump snapshot with 8 fields per particle: id type x y z vx vy vz, inside the
     // box. The velocities are the cell's, to the last digit.
     void particleFileHoldsTheExactStart() {
-        for (const char* preset : {"dsmc-seed", "dsmc-bkw"}) {
+        for (const char* preset : {"dsmc-write-up", "dsmc-bkw"}) {
             const auto cell = cellFor(preset);
             const auto deck = scaleout::spartaDeck(*cell, {10, 5});
             const auto text = lines(file(deck, scaleout::kSpartaParticles));
