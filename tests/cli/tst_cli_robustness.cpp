@@ -179,6 +179,19 @@ private slots:
         QVERIFY2(outside.err.contains("dt·ω = 2.829 > 2.828: rk4 is unstable"), qPrintable(outside.err));
     }
 
+    // A dt·ω equal to RK4's limit 2√2 used to read "2.82842712474619029 is inside the stability limit
+    // 2.82842712474619029": shown to 4 decimals, it is at the limit, and the hint says so.
+    void rk4HintAtTheLimitSaysItIsAtTheLimit() {
+        const auto r = runCli({"run", "gas-classroom", "--steps", "200", "--set", "integrator=rk4", "--set",
+                               "stiffness=1e6", "--set", "dt=0.002", "--quiet"});
+        QCOMPARE(r.exitCode, 3);
+        QVERIFY2(r.err.contains("dt·ω = 2.8284 is at the stability limit 2.8284 of rk4") &&
+                     r.err.contains("use |dt| < 0.0018"),
+                 qPrintable(r.err));
+        QVERIFY2(!r.err.contains(QRegularExpression("\\d\\.\\d{5}")), qPrintable(r.err)); // few digits
+        QVERIFY2(!r.err.contains("inside"), qPrintable(r.err));
+    }
+
     void dsmcRefusesWhatItCannotDoInTime() {
         QElapsedTimer clock;
         clock.start();
