@@ -3,6 +3,7 @@
 #include "AtomicFile.h"
 
 #include <cerrno>
+#include <csignal>
 #include <cstring>
 #include <ctime>
 #include <dirent.h>
@@ -17,11 +18,15 @@ namespace pl {
 
 namespace {
 
-// Temporary files are named target + kTempMark + six characters of mkstemp; a writer holds an exclusive
-// flock on its own while it lives, so one that nobody holds belongs to a process that died.
+// Temporary files are named target + kTempMark + the writer's process id + '-' + six characters of
+// mkstemp ("s.csv.tmp-4711-a8Zq0B"); a writer holds an exclusive flock on its own while it lives. One whose
+// process is gone and that nobody holds is removed at once, whatever its age. Builds before the process id
+// was in the name wrote target + kTempMark + six characters: those, and those of a process id that lives
+// (perhaps reused), are removed once nobody holds them and they are not brand new.
 constexpr const char* kTempMark = ".tmp-";
 constexpr int kTempRandom = 6;
-// A temporary file this young may belong to a writer between mkstemp and flock: it is left alone.
+// A temporary file this young may belong to a writer between mkstemp and flock: it is left alone unless
+// its process is gone.
 constexpr std::time_t kStaleSeconds = 10;
 constexpr int kMaxLinkHops = 40; // as the kernel's own limit on a chain of links
 
@@ -57,18 +62,36 @@ void syncFolder(const std::string& folder) {
     ::close(fd);
 }
 
-bool isTempName(const std::string& entry, const std::string& base) {
-    const std::string prefix = base + kTempMark;
-    if (entry.size() != prefix.size() + kTempRandom || entry.compare(0, prefix.size(), prefix) != 0)
-        return false;
-    for (std::size_t i = prefix.size(); i < entry.size(); ++i) {
-        const char c = entry[i];
+bool isTempRandom(const std::string& text) {
+    if (text.size() != kTempRandom) return false;
+    for (const char c : text)
         if (!((c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9'))) return false;
-    }
     return true;
 }
 
-// Removes temporary files of target that no living writer holds and that are not brand new.
+// Whether entry is a temporary file of base; pid receives its writer's process id, or 0 for a name of an
+// earlier build that holds none.
+bool isTempName(const std::string& entry, const std::string& base, pid_t& pid) {
+    const std::string prefix = base + kTempMark;
+    if (entry.size() <= prefix.size() || entry.compare(0, prefix.size(), prefix) != 0) return false;
+    const std::string rest = entry.substr(prefix.size());
+    pid = 0;
+    const auto dash = rest.find('-');
+    if (dash == std::string::npos) return isTempRandom(rest);
+    if (dash == 0 || dash > 9) return false; // a process id has at most 7 digits (pid_max ≤ 2²²)
+    for (std::size_t i = 0; i < dash; ++i) {
+        if (rest[i] < '0' || rest[i] > '9') return false;
+        pid = pid * 10 + (rest[i] - '0');
+    }
+    return pid > 0 && isTempRandom(rest.substr(dash + 1));
+}
+
+bool processIsGone(pid_t pid) {
+    return pid > 0 && ::kill(pid, 0) != 0 && errno == ESRCH;
+}
+
+// Removes temporary files of target that no living writer holds: at once when the process that made
+// them is gone, else once they are not brand new.
 void removeStaleTemps(const std::string& target) {
     const std::string folder = folderOf(target), base = nameOf(target);
     DIR* dir = ::opendir(folder.c_str());
@@ -76,11 +99,12 @@ void removeStaleTemps(const std::string& target) {
     const std::time_t now = std::time(nullptr);
     while (const dirent* entry = ::readdir(dir)) {
         const std::string name = entry->d_name;
-        if (!isTempName(name, base)) continue;
+        pid_t pid = 0;
+        if (!isTempName(name, base, pid)) continue;
         const std::string path = folder + "/" + name;
         struct stat st {};
-        if (::lstat(path.c_str(), &st) != 0 || !S_ISREG(st.st_mode) || now - st.st_mtime < kStaleSeconds)
-            continue;
+        if (::lstat(path.c_str(), &st) != 0 || !S_ISREG(st.st_mode)) continue;
+        if (!processIsGone(pid) && now - st.st_mtime < kStaleSeconds) continue;
         const int fd = ::open(path.c_str(), O_RDONLY | O_NOFOLLOW | O_CLOEXEC);
         if (fd < 0) continue;
         if (::flock(fd, LOCK_EX | LOCK_NB) == 0) ::unlink(path.c_str());
@@ -91,7 +115,7 @@ void removeStaleTemps(const std::string& target) {
 
 // A new temporary file beside target, locked; returns its descriptor and fills temp, or throws.
 int createTemp(const std::string& path, const std::string& target, std::string& temp) {
-    temp = target + kTempMark + std::string(kTempRandom, 'X');
+    temp = target + kTempMark + std::to_string(::getpid()) + "-" + std::string(kTempRandom, 'X');
     const int fd = ::mkstemp(temp.data());
     if (fd < 0) throw FileError("cannot write '" + path + "': " + systemReason());
     ::flock(fd, LOCK_EX);
@@ -124,6 +148,7 @@ std::string outputTarget(const std::string& path) {
 
 void checkOutputPath(const std::string& path) {
     const std::string target = outputTarget(path);
+    removeStaleTemps(target);
     if (::access(target.c_str(), F_OK) == 0 && ::access(target.c_str(), W_OK) != 0)
         throw FileError("cannot write '" + path + "': " + systemReason());
     std::string temp;

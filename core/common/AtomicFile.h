@@ -19,16 +19,17 @@ public:
 std::string outputTarget(const std::string& path);
 
 // Checks before a long run that path can be written: its target is absent or a regular file it may
-// write, and a file can be created beside it (one is created and removed). Throws FileError naming the
-// path and why.
+// write, and a file can be created beside it (one is created and removed). Temporary files of earlier
+// writes to it that a killed process left are removed first (as writeFileAtomically does). Throws
+// FileError naming the path and why.
 void checkOutputPath(const std::string& path);
 
 // Writes content to a temporary file beside the target (outputTarget), flushes it to disk, renames it
 // over the target and flushes the folder, so that the file is the old one or the new one, whole, even
 // after a crash. The target keeps its permissions (a new file gets 0666 less the umask). The temporary
-// file is removed on every failure, and temporary files of earlier writes to the same path that a
-// killed process left are removed first. Throws FileError naming the path and the system's reason; the
-// old file stays intact on failure.
+// file (target.tmp-PID-XXXXXX) is removed on every failure, and temporary files of earlier writes to the
+// same path whose process is gone are removed first, whatever their age. Throws FileError naming the
+// path and the system's reason; the old file stays intact on failure.
 void writeFileAtomically(const std::string& path, std::string_view content);
 
 // Reads a whole file; throws FileError naming the path and the system's reason.

@@ -271,6 +271,29 @@ private slots:
         QCOMPARE(QDir(dir.path()).entryList(QDir::Files).size(), 3);
     }
 
+    // A temporary file whose process is gone is removed by the next write to its file (or the check of an
+    // output before a run), however young: it used to stay until a run at least 10 s later.
+    void tempFilesOfADeadProcessAreRemovedWhateverTheirAge() {
+        QProcess gone;
+        gone.start("true");
+        QVERIFY(gone.waitForStarted());
+        const qint64 deadPid = gone.processId();
+        QVERIFY(gone.waitForFinished());
+        QTemporaryDir dir;
+        const QString hist = dir.filePath("h.csv"), series = dir.filePath("s.csv");
+        const QString dead = hist + QString(".tmp-%1-AbC123").arg(deadPid),
+                      deadSeries = series + QString(".tmp-%1-XyZ789").arg(deadPid),
+                      living = hist + QString(".tmp-%1-Qwe456").arg(::getpid());
+        for (const QString& f : {dead, deadSeries, living}) writeFile(f, "half");
+        const auto r =
+            runCli({"run", "gas-seed", "--steps", "1", "--histogram", hist, "--out", series, "--quiet"});
+        QCOMPARE(r.exitCode, 0);
+        QVERIFY(!QFileInfo::exists(dead));
+        QVERIFY(!QFileInfo::exists(deadSeries)); // the streamed series is checked before the run
+        QVERIFY(QFileInfo::exists(living));      // its writer may still be writing
+        QCOMPARE(QDir(dir.path()).entryList(QDir::Files).size(), 3);
+    }
+
     void memoryStaysFlatOverALongRun() {
         if (qEnvironmentVariableIsSet("ASAN_OPTIONS")) // .ci/sanitize.sh
             QSKIP("AddressSanitizer keeps freed memory in quarantine: resident memory grows by design");
