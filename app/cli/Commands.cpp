@@ -40,18 +40,15 @@ void setThreads(int threads) {
 // snapshot file continues where it was taken, so it takes no --set or --seed (they would restart it).
 std::unique_ptr<Model> prepare(const std::string& name, const std::vector<std::string>& sets,
                                std::optional<std::uint64_t> seed, const std::string& backend) {
-    Snapshot snapshot;
-    const bool continues = isSnapshotFile(name);
+    auto [snapshot, continues] = openExperiment(name);
     if (continues) {
         if (!sets.empty() || seed)
             throw std::invalid_argument("'" + name +
                                         "' is a snapshot: it continues as it was saved, without --set or "
                                         "--seed (change parameters in a preset instead)");
-        snapshot = readSnapshotFile(name, specsForModel);
     } else {
         if (const std::string notice = presetRenameNotice(name); !notice.empty())
             std::cerr << "particlelab-cli: " << notice << '\n';
-        snapshot.preset = loadPreset(name);
         applySets(snapshot.preset, sets);
         if (seed) snapshot.preset.seed = *seed;
     }

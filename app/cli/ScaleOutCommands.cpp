@@ -35,18 +35,11 @@ int fail(int code, const std::string& message) {
 }
 
 // The experiment of a built-in name, a preset file or a snapshot file (then with its saved state), with
-// --set and --seed applied. Throws PresetError or FileError.
+// --set and --seed applied. Throws PresetError.
 Preset loadExperiment(const ScaleOutOptions& options, std::optional<StateRecord>& state) {
-    Preset preset;
-    std::error_code error;
-    if (std::filesystem::is_regular_file(options.preset, error) &&
-        isSnapshotJson(readWholeFile(options.preset))) {
-        Snapshot snapshot = readSnapshotFile(options.preset, specsForModel);
-        preset = std::move(snapshot.preset);
-        state = std::move(snapshot.state);
-    } else {
-        preset = loadPreset(options.preset);
-    }
+    auto [snapshot, isSnapshot] = openExperiment(options.preset);
+    Preset preset = std::move(snapshot.preset);
+    if (isSnapshot) state = std::move(snapshot.state);
     applySets(preset, options.sets);
     if (options.seed) preset.seed = *options.seed;
     return preset;

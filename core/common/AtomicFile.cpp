@@ -8,8 +8,6 @@
 #include <ctime>
 #include <dirent.h>
 #include <fcntl.h>
-#include <fstream>
-#include <sstream>
 #include <sys/file.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -192,13 +190,39 @@ void writeFileAtomically(const std::string& path, std::string_view content) {
     syncFolder(folderOf(target));
 }
 
-std::string readWholeFile(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw FileError("cannot open '" + path + "': " + systemReason());
-    std::ostringstream buffer;
-    buffer << in.rdbuf();
-    if (in.bad()) throw FileError("cannot read '" + path + "': " + systemReason());
-    return buffer.str();
+std::string readWholeFile(const std::string& path, std::size_t maxBytes, const std::string& what) {
+    // O_NONBLOCK: a FIFO opens at once instead of waiting for a writer, and is refused below.
+    const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+    if (fd < 0) throw FileError("cannot open '" + path + "': " + systemReason());
+    const auto refuse = [&](const std::string& why) {
+        ::close(fd);
+        throw FileError(why);
+    };
+    const auto tooLarge = [&](std::size_t size) {
+        refuse("will not read '" + path + "': it holds " + byteSize(size) + ", more than the " +
+               byteSize(maxBytes) + " that " + what + " may hold");
+    };
+    struct stat st {};
+    if (::fstat(fd, &st) != 0) refuse("cannot read '" + path + "': " + systemReason());
+    if (!S_ISREG(st.st_mode))
+        refuse("will not read '" + path + "': it is " + kindOf(st.st_mode) +
+               ", and only regular files are read");
+    if (static_cast<std::size_t>(st.st_size) > maxBytes) tooLarge(static_cast<std::size_t>(st.st_size));
+    std::string text;
+    text.reserve(static_cast<std::size_t>(st.st_size));
+    char buffer[1 << 16];
+    for (;;) {
+        const ssize_t n = ::read(fd, buffer, sizeof buffer);
+        if (n == 0) break;
+        if (n < 0) {
+            if (errno == EINTR) continue;
+            refuse("cannot read '" + path + "': " + systemReason());
+        }
+        text.append(buffer, static_cast<std::size_t>(n));
+        if (text.size() > maxBytes) tooLarge(text.size()); // it grew since fstat, or says no size (/proc)
+    }
+    ::close(fd);
+    return text;
 }
 
 StreamedFile::StreamedFile(const std::string& path) : path_(path) {

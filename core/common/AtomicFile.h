@@ -1,7 +1,10 @@
 // Writing files so that a crash or a full disk never leaves a half-written file behind, and never
-// replaces what is not a regular file.
+// replaces what is not a regular file; reading only regular files, of a bounded size.
 #pragma once
 
+#include "InputLimits.h"
+
+#include <cstddef>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -32,8 +35,12 @@ void checkOutputPath(const std::string& path);
 // path and the system's reason; the old file stays intact on failure.
 void writeFileAtomically(const std::string& path, std::string_view content);
 
-// Reads a whole file; throws FileError naming the path and the system's reason.
-std::string readWholeFile(const std::string& path);
+// Reads a whole regular file of at most maxBytes [bytes]. Throws FileError naming the path and why: the
+// system's reason, or at once, before a byte is read, for what is not a regular file (a FIFO, a device, a
+// directory: nothing blocks) and for a file larger than maxBytes ("… more than the 16 MiB that a preset
+// file may hold"; what names the kind of file).
+std::string readWholeFile(const std::string& path, std::size_t maxBytes = kMaxSnapshotFileBytes,
+                          const std::string& what = "a preset or snapshot file");
 
 // A file written piece by piece where each piece reaches the operating system at once (no buffer in the
 // process), so a killed or interrupted process leaves every piece it wrote: the CLI's time series,

@@ -3,6 +3,7 @@
 // permissions, paths checked first), rows kept when a run is stopped by a signal, strict input syntax.
 #include "CliRunner.h"
 
+#include <QDir>
 #include <QElapsedTimer>
 #include <QFile>
 #include <QRegularExpression>
@@ -292,6 +293,79 @@ private slots:
         QVERIFY(!QFileInfo::exists(deadSeries)); // the streamed series is checked before the run
         QVERIFY(QFileInfo::exists(living));      // its writer may still be writing
         QCOMPARE(QDir(dir.path()).entryList(QDir::Files).size(), 3);
+    }
+
+    // A preset or snapshot path that is no regular file is refused at once: a FIFO used to block the run,
+    // /dev/zero to be read without bound.
+    void inputsThatAreNotRegularFilesAreRefusedAtOnce() {
+        QTemporaryDir dir;
+        const QString fifo = dir.filePath("fifo.json");
+        QVERIFY(::mkfifo(fifo.toUtf8().constData(), 0644) == 0);
+        QElapsedTimer clock;
+        clock.start();
+        for (const QString& path : {fifo, QString("/dev/zero"), dir.path()})
+            for (const char* command : {"run", "columns"}) {
+                const auto r = runCli({command, path}, 10000);
+                QVERIFY2(!r.timedOut && !r.crashed, qPrintable(path));
+                QCOMPARE(r.exitCode, 2);
+                QVERIFY2(r.err.startsWith("particlelab-cli: ") && r.err.contains("'" + path + "'") &&
+                             r.err.contains("only regular files are read"),
+                         qPrintable(r.err));
+                QCOMPARE(r.err.count('\n'), 1);
+            }
+        QVERIFY(clock.elapsed() < 10000);
+    }
+
+    // A file larger than a preset or snapshot may be is refused before it is read, naming the bound.
+    void hugeInputFilesAreRefusedBeforeTheyAreRead() {
+        QTemporaryDir dir;
+        const QString huge = dir.filePath("huge.json"), big = dir.filePath("big.json");
+        QFile hugeFile(huge), bigFile(big);
+        QVERIFY(hugeFile.open(QIODevice::WriteOnly) && hugeFile.resize(qint64(1) << 30)); // sparse: no disk
+        hugeFile.close();
+        QVERIFY(bigFile.open(QIODevice::WriteOnly));
+        bigFile.write(R"({"schema": 2, "model": "gas"})");
+        QVERIFY(bigFile.resize(qint64(20) << 20)); // a valid preset, then 20 MiB of NUL bytes
+        bigFile.close();
+        QElapsedTimer clock;
+        clock.start();
+        const auto r = runCli({"run", huge, "--steps", "1"}, 20000);
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains("'" + huge + "'") && r.err.contains("holds 1 GiB, more than the 256 MiB"),
+                 qPrintable(r.err));
+        QVERIFY2(clock.elapsed() < 3000, "the file was read"); // refused from its size
+        const auto preset = runCli({"run", big, "--steps", "1"}, 20000);
+        QCOMPARE(preset.exitCode, 2);
+        QVERIFY2(preset.err.contains("holds 20 MiB, more than the 16 MiB that a preset file may hold"),
+                 qPrintable(preset.err));
+    }
+
+    // JSON nested 200 000 deep used to overflow the stack (SIGSEGV) in the preset's migration or the
+    // snapshot's copy of its preset.
+    void deeplyNestedJsonIsRefusedNamingTheDepth_data() {
+        QTest::addColumn<QByteArray>("json");
+        const QByteArray deep = QByteArray(200000, '[') + QByteArray(200000, ']');
+        QTest::newRow("preset") << QByteArray(R"({"schema":2,"model":"gas","params":{"dt":)") + deep + "}}";
+        QTest::newRow("schema-1 preset")
+            << QByteArray(R"({"schema":1,"model":"fluid","params":{"gravity_y":)") + deep + "}}";
+        QTest::newRow("snapshot")
+            << QByteArray(R"({"snapshot_schema":1,"preset":{"schema":2,"model":"gas","name":)") + deep +
+                   R"(},"state":{"scalars":{},"arrays":{}}})";
+        QTest::newRow("unbalanced") << QByteArray(200000, '{');
+    }
+    void deeplyNestedJsonIsRefusedNamingTheDepth() {
+        QFETCH(QByteArray, json);
+        QTemporaryDir dir;
+        const QString path = dir.filePath("deep.json");
+        writeFile(path, json);
+        for (const char* command : {"run", "columns"}) {
+            const auto r = runCli({command, path}, 30000);
+            QVERIFY2(!r.crashed && !r.timedOut, qPrintable(r.err));
+            QCOMPARE(r.exitCode, 2);
+            QVERIFY2(r.err.contains(path) && r.err.contains("more than 64 levels deep (line 1)"),
+                     qPrintable(r.err));
+            QCOMPARE(r.err.count('\n'), 1);
+        }
     }
 
     void memoryStaysFlatOverALongRun() {
