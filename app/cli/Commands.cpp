@@ -1,5 +1,6 @@
 // Implementation of the CLI subcommands on top of the model catalog.
 #include "Commands.h"
+#include "OptionChecks.h"
 #include "RunSupport.h"
 #include "common/Snapshot.h"
 
@@ -177,11 +178,21 @@ int listColumns(const std::string& sceneOrPreset) {
 
 namespace {
 
+// The files a run writes, each with its option.
+std::vector<NamedFile> runOutputs(const RunOptions& options) {
+    return {{"--out", options.out},
+            {"--histogram", options.histogram},
+            {"--dump-initial", options.dumpInitial},
+            {"--dump-final", options.dumpFinal},
+            {"--snapshot", options.snapshot},
+            {"--fields", options.fields},
+            {"--surface", options.surface}};
+}
+
 // Every file a run writes is checked before it starts: a long run never ends in an unwritable path.
 void checkRunOutputs(const RunOptions& options) {
-    for (const std::string* path : {&options.out, &options.histogram, &options.dumpInitial,
-                                    &options.dumpFinal, &options.snapshot, &options.fields, &options.surface})
-        if (!path->empty()) checkOutputPath(*path);
+    for (const NamedFile& output : runOutputs(options))
+        if (!output.path.empty()) checkOutputPath(output.path);
 }
 
 void warnIfInaccurate(const Model& model) {
@@ -194,6 +205,12 @@ void warnIfInaccurate(const Model& model) {
 int runSimulation(const RunOptions& options) {
     setThreads(options.threads);
     std::unique_ptr<Model> model;
+    if (const std::string refusal =
+            sharedFileRefusal(runOutputs(options), {{"the input", experimentFile(options.preset)}});
+        !refusal.empty()) {
+        std::cerr << "particlelab-cli: " << refusal << "\n";
+        return kBadInput;
+    }
     try {
         checkRunOutputs(options);
     } catch (const FileError& e) {
@@ -302,6 +319,12 @@ gas::SweepResult sweepFromPreset(const SweepOptions& options) {
 }
 
 int integratorSweep(const SweepOptions& options) {
+    if (const std::string refusal =
+            sharedFileRefusal({{"--out", options.out}}, {{"--from", experimentFile(options.from)}});
+        !refusal.empty()) {
+        std::cerr << "particlelab-cli: " << refusal << "\n";
+        return kBadInput;
+    }
     gas::SweepResult result;
     try {
         result = options.from.empty()

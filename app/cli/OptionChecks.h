@@ -5,6 +5,7 @@
 #include <CLI/CLI.hpp>
 
 #include <string>
+#include <vector>
 
 namespace pl::cli {
 
@@ -21,6 +22,17 @@ CLI::Validator fileName();
 // Threads for OpenMP: 1 … 4 × the cores of this machine.
 CLI::Validator threadCount();
 int maxThreads();
+
+// An option and the file it names: {"--out", "s.csv"}; an input too: {"the input", "mine.json"}.
+struct NamedFile {
+    std::string option;
+    std::string path; // empty: not given, skipped
+};
+// One sentence when two outputs name one file (pl::sameFile: through symbolic or hard links, or the same
+// name in the same folder for a file not there yet), or an output names one of the inputs; empty when each
+// output has a file of its own. Checked before anything runs or is written (bad input, exit 2).
+std::string sharedFileRefusal(const std::vector<NamedFile>& outputs,
+                              const std::vector<NamedFile>& inputs = {});
 
 // A strictly written finite or non-finite number: the whole text, decimal, optional sign and exponent.
 // Returns false for anything else ("", " 1", "0x10", "1e", "5 ").

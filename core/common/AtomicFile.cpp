@@ -8,6 +8,7 @@
 #include <ctime>
 #include <dirent.h>
 #include <fcntl.h>
+#include <filesystem>
 #include <sys/file.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -120,7 +121,38 @@ int createTemp(const std::string& path, const std::string& target, std::string& 
     return fd;
 }
 
+// What a path names once written: the device and inode of the file there (through links), or, for a file
+// not there yet, its folder after links and its name.
+struct FileIdentity {
+    bool exists = false;
+    dev_t device = 0;
+    ino_t inode = 0;
+    std::string where;
+};
+
+FileIdentity identityOf(const std::string& path) {
+    std::string target = path;
+    try {
+        target = outputTarget(path);
+    } catch (const FileError&) {
+        // not a regular file, or a link that cannot be followed: compared as it is
+    }
+    struct stat st {};
+    if (::stat(target.c_str(), &st) == 0) return {true, st.st_dev, st.st_ino, {}};
+    std::error_code error;
+    std::filesystem::path folder = std::filesystem::absolute(folderOf(target), error);
+    if (std::filesystem::path resolved = std::filesystem::weakly_canonical(folder, error); !error)
+        folder = std::move(resolved);
+    return {false, 0, 0, (folder / nameOf(target)).lexically_normal().string()};
+}
+
 } // namespace
+
+bool sameFile(const std::string& a, const std::string& b) {
+    const FileIdentity x = identityOf(a), y = identityOf(b);
+    if (x.exists != y.exists) return false;
+    return x.exists ? x.device == y.device && x.inode == y.inode : x.where == y.where;
+}
 
 std::string outputTarget(const std::string& path) {
     if (path.empty()) throw FileError("cannot write a file without a name");

@@ -27,6 +27,11 @@ std::string outputTarget(const std::string& path);
 // FileError naming the path and why.
 void checkOutputPath(const std::string& path);
 
+// Whether two paths name one file once written: the same file through symbolic and hard links, or for a
+// file that is not there yet, the same name in the same folder (after links). Paths that cannot be
+// resolved (a missing folder) are compared as written, made absolute.
+bool sameFile(const std::string& a, const std::string& b);
+
 // Writes content to a temporary file beside the target (outputTarget), flushes it to disk, renames it
 // over the target and flushes the folder, so that the file is the old one or the new one, whole, even
 // after a crash. The target keeps its permissions (a new file gets 0666 less the umask). The temporary

@@ -368,6 +368,81 @@ private slots:
         }
     }
 
+    // Two outputs on one file, or an output over what the command reads, used to lose data silently: the
+    // series replaced by the histogram, two streams interleaved, the input preset overwritten.
+    void outputsThatShareAFileAreRefusedBeforeTheRun_data() {
+        QTest::addColumn<QStringList>("args"); // DIR is the test's folder
+        QTest::addColumn<QString>("message");
+        const QStringList gas{"run", "gas-seed", "--steps", "3", "--quiet"};
+        const QStringList tunnel{"run", "tunnel-cylinder", "--steps", "3", "--quiet"};
+        QTest::newRow("out and histogram")
+            << gas + QStringList{"--out", "DIR/same.csv", "--histogram", "DIR/same.csv"}
+            << "--out and --histogram name 'DIR/same.csv': one output would replace the other";
+        QTest::newRow("out and surface")
+            << tunnel + QStringList{"--out", "DIR/s.csv", "--surface", "DIR/s.csv"} << "--out and --surface";
+        QTest::newRow("fields and snapshot, spelled apart")
+            << tunnel + QStringList{"--snapshot", "DIR/f.csv", "--fields", "DIR/./f.csv"}
+            << "--snapshot and --fields name 'DIR/f.csv' and 'DIR/./f.csv', which are one file";
+        QTest::newRow("through a link")
+            << gas + QStringList{"--histogram", "DIR/target.csv", "--out", "DIR/link.csv"}
+            << "--out and --histogram name 'DIR/link.csv' and 'DIR/target.csv', which are one file";
+        QTest::newRow("through a link to a new file")
+            << gas + QStringList{"--dump-initial", "DIR/newlink.csv", "--dump-final", "DIR/new.csv"}
+            << "--dump-initial and --dump-final";
+        QTest::newRow("through a linked folder")
+            << gas + QStringList{"--dump-final", "DIR/sub/d.csv", "--out", "DIR/sublink/d.csv"}
+            << "--out and --dump-final";
+        QTest::newRow("over the input preset")
+            << QStringList{"run", "DIR/mine.json", "--out", "DIR/mine.json"}
+            << "--out and the input name 'DIR/mine.json': the output would "
+               "replace what the run reads";
+        QTest::newRow("over the input snapshot")
+            << QStringList{"run", "DIR/snap.json", "--snapshot", "DIR/snap.json"}
+            << "--snapshot and the input";
+        QTest::newRow("sweep over its preset")
+            << QStringList{"sweep", "--from", "DIR/gas.json", "--out", "DIR/gas.json"} << "--out and --from";
+        QTest::newRow("import lammps")
+            << QStringList{"import", "lammps", "DIR", "--out", "DIR/i.csv", "--histogram", "DIR/i.csv"}
+            << "--out and --histogram";
+        QTest::newRow("import over the log")
+            << QStringList{"import", "sparta", "DIR", "--histogram", "DIR/log.sparta"}
+            << "--histogram and the run's log";
+    }
+    void outputsThatShareAFileAreRefusedBeforeTheRun() {
+        QFETCH(QStringList, args);
+        QFETCH(QString, message);
+        QTemporaryDir dir;
+        const auto withDir = [&](QString text) { return text.replace("DIR", dir.path()); };
+        for (QString& arg : args) arg = withDir(arg);
+        const QByteArray preset = R"({"schema": 2, "model": "gas", "name": "mine"})";
+        writeFile(dir.filePath("mine.json"), preset);
+        writeFile(dir.filePath("gas.json"), preset);
+        writeFile(dir.filePath("target.csv"), "old\n");
+        writeFile(dir.filePath("log.sparta"), "a log\n");
+        QVERIFY(QFile::link(dir.filePath("target.csv"), dir.filePath("link.csv")));
+        QVERIFY(QFile::link(dir.filePath("new.csv"), dir.filePath("newlink.csv")));
+        QVERIFY(QDir(dir.path()).mkdir("sub") && QFile::link(dir.filePath("sub"), dir.filePath("sublink")));
+        QCOMPARE(
+            runCli({"run", "gas-seed", "--steps", "2", "--quiet", "--snapshot", dir.filePath("snap.json")})
+                .exitCode,
+            0);
+        const auto contents = [&] {
+            QStringList all;
+            for (const QFileInfo& f : QDir(dir.path()).entryInfoList(QDir::Files | QDir::NoDotAndDotDot))
+                all << f.fileName() + ":" + QString::number(f.size()) + ":" +
+                           f.lastModified().toString(Qt::ISODateWithMs);
+            return all;
+        };
+        const QStringList before = contents();
+        const auto r = runCli(args, 30000);
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.startsWith("particlelab-cli: ") && r.err.contains(withDir(message)),
+                 qPrintable(r.err));
+        QCOMPARE(r.err.count('\n'), 1);
+        QCOMPARE(contents(), before); // nothing written, nothing replaced
+        QVERIFY(!QFileInfo::exists(dir.filePath("sub/d.csv")));
+    }
+
     void memoryStaysFlatOverALongRun() {
         if (qEnvironmentVariableIsSet("ASAN_OPTIONS")) // .ci/sanitize.sh
             QSKIP("AddressSanitizer keeps freed memory in quarantine: resident memory grows by design");

@@ -270,6 +270,28 @@ private slots:
         QVERIFY(opened.isSnapshot && !opened.snapshot.state.arrays.empty());
     }
 
+    // Whether two output paths are one file: through links, for files not there yet by folder and name.
+    void sameFileSeesThroughLinks() {
+        QTemporaryDir dir;
+        const auto at = [&](const char* name) { return dir.filePath(name).toStdString(); };
+        {
+            std::FILE* f = std::fopen(at("a.csv").c_str(), "w");
+            QVERIFY(f);
+            std::fclose(f);
+        }
+        QVERIFY(::symlink(at("a.csv").c_str(), at("link.csv").c_str()) == 0);
+        QVERIFY(::link(at("a.csv").c_str(), at("hard.csv").c_str()) == 0);
+        QVERIFY(::mkdir(at("sub").c_str(), 0755) == 0 && ::symlink("sub", at("sublink").c_str()) == 0);
+        QVERIFY(sameFile(at("a.csv"), at("a.csv")));
+        QVERIFY(sameFile(at("a.csv"), at("link.csv")));
+        QVERIFY(sameFile(at("hard.csv"), at("link.csv")));
+        QVERIFY(sameFile(at("new.csv"), dir.path().toStdString() + "/./sub/../new.csv"));
+        QVERIFY(sameFile(at("sub/n.csv"), at("sublink/n.csv")));
+        QVERIFY(!sameFile(at("a.csv"), at("new.csv")));
+        QVERIFY(!sameFile(at("sub/n.csv"), at("n.csv")));
+        QVERIFY(sameFile("/nonexistent/x.csv", "/nonexistent/./x.csv"));
+    }
+
     void nothingHalfApplied() {
         GasModel model;
         model.reset(loadPreset("gas-classroom"));
