@@ -2,6 +2,7 @@
 #include "OptionChecks.h"
 
 #include "common/AtomicFile.h"
+#include "common/ParamSpec.h"
 
 #include <charconv>
 #include <cmath>
@@ -57,18 +58,21 @@ CLI::Validator wholeNumber(long long lo, long long hi, const std::string& why) {
         "INT in " + std::to_string(lo) + "…" + std::to_string(hi));
 }
 
-CLI::Validator positiveReal(bool zeroAllowed) {
+CLI::Validator positiveReal(bool zeroAllowed, double most) {
+    const bool bounded = std::isfinite(most);
     return CLI::Validator(
-        [zeroAllowed](std::string& text) -> std::string {
+        [zeroAllowed, most, bounded](std::string& text) -> std::string {
             double value = 0;
             const std::string wanted =
-                zeroAllowed ? "a finite number of at least 0" : "a finite number above 0";
+                std::string(zeroAllowed ? "a finite number of at least 0" : "a finite number above 0") +
+                (bounded ? " and at most " + formatNumber(most) : "");
             if (!parseStrictNumber(text, value) || !std::isfinite(value) || value < 0 ||
-                (!zeroAllowed && value == 0))
+                (!zeroAllowed && value == 0) || value > most)
                 return "must be " + wanted + ", got " + echoed(text);
             return {};
         },
-        zeroAllowed ? "NUMBER ≥ 0" : "NUMBER > 0");
+        std::string(zeroAllowed ? "NUMBER ≥ 0" : "NUMBER > 0") +
+            (bounded ? ", ≤ " + formatNumber(most) : ""));
 }
 
 CLI::Validator fileName() {

@@ -4,6 +4,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -15,8 +16,8 @@ constexpr long long kMaxSteps = 1'000'000'000;
 // A whole number in [lo, hi], written in digits or as an exact power notation ("20000", "2e4"); the
 // value is rewritten in digits for CLI11. why says where the bounds come from.
 CLI::Validator wholeNumber(long long lo, long long hi, const std::string& why = "");
-// A finite number above 0 (or at least 0 when zeroAllowed); no spaces, no hexadecimal.
-CLI::Validator positiveReal(bool zeroAllowed = false);
+// A finite number above 0 (or at least 0 when zeroAllowed), and at most most; no spaces, no hexadecimal.
+CLI::Validator positiveReal(bool zeroAllowed = false, double most = std::numeric_limits<double>::infinity());
 // A file name that is not empty.
 CLI::Validator fileName();
 // Threads for OpenMP: 1 … 4 × the cores of this machine.

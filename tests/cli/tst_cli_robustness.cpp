@@ -104,6 +104,27 @@ private slots:
         QTest::newRow("repeats abc") << QStringList{"--repeats", "abc"} << "--repeats";
         QTest::newRow("unknown scene") << QStringList{"--scenes", "plasma"} << "--scenes: plasma not in";
         QTest::newRow("unknown flag") << QStringList{"--bogus"} << "--bogus";
+        QTest::newRow("gas -5") << QStringList{"--gas", "-5"} << "--gas: must be from 1 to 67108864";
+        QTest::newRow("gas 0") << QStringList{"--gas", "4096", "0"} << "--gas: must be from 1 to";
+        QTest::newRow("gas 1e20") << QStringList{"--gas", "99999999999999999999"}
+                                  << "--gas: must be from 1 to";
+        QTest::newRow("fluid 0") << QStringList{"--fluid", "0"} << "--fluid: must be from 1 to";
+        QTest::newRow("tunnel 0") << QStringList{"--tunnel", "0"} << "--tunnel: must be from 1 to";
+        QTest::newRow("tunnel grid too fine") << QStringList{"--scenes", "tunnel", "--tunnel", "67108864"}
+                                              << "--tunnel 67108864: cells_x × cells_y = ";
+        QTest::newRow("repeats 0") << QStringList{"--repeats", "0"} << "--repeats: must be from 1 to";
+        QTest::newRow("repeats -1") << QStringList{"--repeats", "-1"} << "--repeats: must be from 1 to";
+        QTest::newRow("seconds -1") << QStringList{"--seconds", "-1"}
+                                    << "--seconds: must be a finite number above 0";
+        QTest::newRow("seconds nan") << QStringList{"--seconds", "nan"}
+                                     << "--seconds: must be a finite number";
+        QTest::newRow("seconds 0") << QStringList{"--seconds", "0"}
+                                   << "--seconds: must be a finite number above 0";
+        QTest::newRow("seconds 1e9") << QStringList{"--seconds", "1e9"} << "and at most 60";
+        QTest::newRow("settle -1") << QStringList{"--settle", "-1"}
+                                   << "--settle: must be a finite number of at least 0";
+        QTest::newRow("settle inf") << QStringList{"--settle", "inf"} << "--settle: must be a finite number";
+        QTest::newRow("cpu-max -1") << QStringList{"--cpu-max", "-1"} << "--cpu-max: must be from 0 to";
     }
     void benchBadOptionsAreExit2WithASentence() {
         QFETCH(QStringList, args);
@@ -114,6 +135,26 @@ private slots:
         QCOMPARE(r.exitCode, 2);
         QVERIFY2(r.err.startsWith("particlelab-bench: ") && r.err.contains(message), qPrintable(r.err));
         QVERIFY2(r.out.isEmpty(), qPrintable(r.out)); // nothing measured, no JSON line
+    }
+
+    // The benchmark's file is checked before the sweep: a directory, /proc or a FIFO used to exit 0 having
+    // written nothing (or to block on the FIFO).
+    void benchOutIsCheckedBeforeTheSweep() {
+        QTemporaryDir dir;
+        const QString fifo = dir.filePath("fifo");
+        QVERIFY(::mkfifo(fifo.toUtf8().constData(), 0644) == 0);
+        for (const QString& path : {dir.path(), QString("/proc/particlelab-bench.json"), fifo}) {
+            const auto r = pl::test::runProgram(
+                PARTICLELAB_BENCH,
+                {"--scenes", "gas", "--gas", "64", "--cpu-max", "0", "--repeats", "1", "--out", path}, 20000);
+            QVERIFY2(r.startError.isEmpty(), qPrintable(r.startError));
+            QVERIFY2(!r.crashed && !r.timedOut, qPrintable(path));
+            QCOMPARE(r.exitCode, 4);
+            QVERIFY2(r.err.startsWith("particlelab-bench: ") && r.err.contains(path), qPrintable(r.err));
+            QCOMPARE(r.err.count('\n'), 1);
+            QVERIFY2(r.out.isEmpty(), qPrintable(r.out)); // nothing measured
+        }
+        QVERIFY(QFileInfo(fifo).exists() && !QFileInfo(fifo).isFile()); // the FIFO is still a FIFO
     }
 
     void helpStaysExit0() {
