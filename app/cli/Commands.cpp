@@ -203,6 +203,7 @@ void warnIfInaccurate(const Model& model) {
 } // namespace
 
 int runSimulation(const RunOptions& options) {
+    StopSignals stop; // a signal from here on ends the set-up at once, saying so
     setThreads(options.threads);
     std::unique_ptr<Model> model;
     if (const std::string refusal =
@@ -234,7 +235,7 @@ int runSimulation(const RunOptions& options) {
         return kBadInput;
     }
     warnIfInaccurate(*model);
-    const StopSignals stop;
+    stop.runStarts(); // a signal from here on stops the run after its step, keeping what it measured
     long long sampled = 0;
     try {
         writeText(options.dumpInitial, [&] { return particlesCsv(*model); });

@@ -336,6 +336,41 @@ private slots:
         QCOMPARE(QDir(dir.path()).entryList(QDir::Files).size(), 3);
     }
 
+    // A signal while a large scene is set up used to end the process by the signal, saying nothing.
+    void aSignalDuringSetUpEndsWithASentence_data() {
+        QTest::addColumn<int>("signal");
+        QTest::addColumn<int>("exitCode");
+        QTest::addColumn<QString>("name");
+        QTest::newRow("SIGINT") << int(SIGINT) << 130 << "SIGINT";
+        QTest::newRow("SIGTERM") << int(SIGTERM) << 143 << "SIGTERM";
+    }
+    void aSignalDuringSetUpEndsWithASentence() {
+        QFETCH(int, signal);
+        QFETCH(int, exitCode);
+        QFETCH(QString, name);
+        QTemporaryDir dir;
+        const QString series = dir.filePath("s.csv");
+        QProcess p;
+        // Seconds of set-up: the free stream of 2.5 M molecules placed before the first step.
+        p.start(PARTICLELAB_CLI, {"run", "tunnel-cylinder", "--set", "fn=1.5e12", "--steps", "0", "--quiet",
+                                  "--threads", "1", "--out", series});
+        QVERIFY(p.waitForStarted());
+        QTest::qWait(300);
+        QElapsedTimer clock;
+        clock.start();
+        ::kill(static_cast<pid_t>(p.processId()), signal);
+        QVERIFY(p.waitForFinished(30000));
+        QCOMPARE(p.exitStatus(), QProcess::NormalExit);
+        QCOMPARE(p.exitCode(), exitCode);
+        const QString err = QString::fromUtf8(p.readAllStandardError());
+        QVERIFY2(err.endsWith("particlelab-cli: stopped by " + name +
+                              " while setting up the experiment; nothing was written\n"),
+                 qPrintable(err));
+        QVERIFY(clock.elapsed() < 1000); // at once, not after the set-up
+        QVERIFY(!QFileInfo::exists(series));
+        QCOMPARE(QDir(dir.path()).entryList(QDir::Files).size(), 0);
+    }
+
     // A preset or snapshot path that is no regular file is refused at once: a FIFO used to block the run,
     // /dev/zero to be read without bound.
     void inputsThatAreNotRegularFilesAreRefusedAtOnce() {
