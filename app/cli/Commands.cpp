@@ -268,8 +268,14 @@ int runSimulation(const RunOptions& options) {
         writeText(options.histogram, [&] { return histogramsCsv(*model); });
         writeText(options.dumpFinal, [&] { return particlesCsv(*model); });
         writeText(options.fields, [&] { return fieldsCsv(*model); });
-        writeText(options.snapshot,
-                  [&] { return serializeSnapshot(takeSnapshot(*model), model->paramSpecs()); });
+        writeText(options.snapshot, [&] {
+            std::string text = serializeSnapshot(takeSnapshot(*model), model->paramSpecs());
+            if (text.size() > kMaxSnapshotFileBytes) // kept whole all the same: nothing measured is lost
+                std::cerr << "particlelab-cli: warning: the snapshot '" << options.snapshot << "' holds "
+                          << byteSize(text.size()) << ", more than the " << byteSize(kMaxSnapshotFileBytes)
+                          << " that `run FILE` and the app read back; use fewer particles to continue it\n";
+            return text;
+        });
     } catch (const FileError& e) {
         std::cerr << "particlelab-cli: " << e.what() << "\n";
         return kCannotWrite;

@@ -11,7 +11,8 @@ namespace pl {
 
 // [bytes] the largest preset file read: the biggest built-in preset is under 4 KiB.
 constexpr std::size_t kMaxPresetFileBytes = std::size_t{16} << 20; // 16 MiB
-// [bytes] the largest snapshot file read: about 2 M disks of the gas, or 3 M molecules of the tunnel.
+// [bytes] the largest snapshot file read: about 1.7 M disks of the gas (160 bytes each) or 2.6 M molecules
+// of the tunnel (100 bytes each). `run --snapshot` writes a larger one all the same, with a warning.
 constexpr std::size_t kMaxSnapshotFileBytes = std::size_t{256} << 20; // 256 MiB
 // The deepest nesting of arrays and objects in a preset or snapshot: theirs is 4 at most.
 constexpr int kMaxJsonDepth = 64;
