@@ -32,12 +32,12 @@ void ExperimentDocument::showError(const QString& what, const QString& message) 
 bool ExperimentDocument::open(const QString& nameOrPath, bool force) {
     if (!force && !maybeSave()) return false;
     Snapshot snapshot;
-    const bool isSnapshot = isSnapshotFile(nameOrPath.toStdString());
+    bool isSnapshot = false;
     try {
-        if (isSnapshot)
-            snapshot = readSnapshotFile(nameOrPath.toStdString(), specsForModel);
-        else
-            snapshot.preset = loadPreset(nameOrPath.toStdString());
+        // The CLI's reader: regular files of bounded size and JSON of bounded depth (InputLimits.h).
+        OpenedExperiment opened = openExperiment(nameOrPath.toStdString());
+        snapshot = std::move(opened.snapshot);
+        isSnapshot = opened.isSnapshot;
     } catch (const std::exception& e) {
         showError(tr("Cannot open preset"), QString::fromUtf8(e.what()));
         return false;

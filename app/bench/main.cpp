@@ -1,9 +1,12 @@
 // particlelab-bench: the GPU benchmark runner. Links core + gl only (no Qt), so it runs headless on a
 // machine with nothing but a GL driver. Prints one JSON line per measurement and a table at the end.
+#include "../cli/OptionChecks.h"
+#include "common/AtomicFile.h"
 #include "gl/Backends.h"
 #include "gl/FluidModelGL.h"
 #include "gl/GasModelGL.h"
 #include "gl/MachineBenchmark.h"
+#include "tunnel/TunnelParams.h"
 
 #include <CLI/CLI.hpp>
 #include <epoxy/gl.h>
@@ -11,8 +14,8 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <fstream>
 #include <iostream>
+#include <memory>
 
 namespace {
 
@@ -37,9 +40,53 @@ constexpr double kTunnelBytesPerParticleStep = 52 + 52 + 24;
 // The issue's goal for the tunnel on an H200: particle-steps per second at 10 M molecules.
 constexpr double kTunnelGoal = 2e9;
 
+// The longest a repeat or the settling may be asked to take [s], and the most repeats: an hour per point
+// at most.
+constexpr double kMaxTargetSeconds = 60.0;
+constexpr long long kMaxRepeats = 60;
+
+// The most particles each scene's scaled preset may have: the gas's count_a range, the fluid's particle cap
+// (which the scaled preset sets to 2 n + 1024), the tunnel's molecule limit.
+long long maxGasSize() {
+    return static_cast<long long>(pl::findSpec(pl::GasParams::describe(), "count_a")->max);
+}
+long long maxFluidSize() {
+    return (static_cast<long long>(pl::findSpec(pl::FluidParams::describe(), "max_particles")->max) - 1024) /
+           2;
+}
+long long maxTunnelSize() {
+    return static_cast<long long>(pl::TunnelParams::maxParticles());
+}
+
+pl::Preset scaledPreset(const std::string& scene, std::size_t n) {
+    return scene == "gas"     ? pl::gl::scaledGasPreset(n)
+           : scene == "fluid" ? pl::gl::scaledFluidPreset(n)
+                              : pl::gl::scaledTunnelPreset(n);
+}
+
+// Why scene cannot be timed at n, as the scene's reset would refuse it (the gas: more disks than half the
+// physical memory holds; the tunnel: more cells than it allows), or empty: checked for every point
+// before the first one runs.
+std::string pointRefusal(const std::string& scene, std::size_t n) {
+    try {
+        const pl::Preset preset = scaledPreset(scene, n);
+        if (scene == "gas")
+            pl::withValues(pl::GasParams{}, pl::GasParams::fields(), preset.params).validate();
+        else if (scene == "fluid")
+            pl::withValues(pl::FluidParams{}, pl::FluidParams::fields(), preset.params).validate();
+        else
+            pl::withValues(pl::TunnelParams{}, pl::TunnelParams::fields(), preset.params).validate();
+    } catch (const std::exception& e) {
+        return e.what();
+    }
+    return {};
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
+    using pl::cli::positiveReal;
+    using pl::cli::wholeNumber;
     CLI::App app{"ParticleLab GPU benchmark: particle-steps per second against N, headless"};
     app.set_version_flag("--version", std::string("particlelab-bench ") + PARTICLELAB_VERSION,
                          "Print the program's version and exit");
@@ -50,23 +97,35 @@ int main(int argc, char** argv) {
     std::size_t cpuMax = 65536;
     std::string out;
     pl::gl::BenchSettings settings;
-    app.add_option("--gas", gasSizes, "Gas sizes (disks)");
-    app.add_option("--fluid", fluidSizes, "Fluid sizes (particles, 5 iterations)");
+    app.add_option("--gas", gasSizes,
+                   "Gas sizes (disks), each at most what half the physical memory holds (240 bytes a disk)")
+        ->transform(wholeNumber(1, maxGasSize(), "the gas's count_a range"));
+    app.add_option("--fluid", fluidSizes, "Fluid sizes (particles, 5 iterations)")
+        ->transform(wholeNumber(1, maxFluidSize(), "the fluid's particle cap, which is 2 N + 1024 here"));
     app.add_option(
-        "--tunnel", tunnelSizes,
-        "Wind-tunnel sizes (molecules): tunnel-cylinder with collisions, F_N and the cell grid scaled");
+           "--tunnel", tunnelSizes,
+           "Wind-tunnel sizes (molecules): tunnel-cylinder with collisions, F_N and the cell grid scaled")
+        ->transform(wholeNumber(1, maxTunnelSize(), "the tunnel's molecule limit"));
     app.add_option(
            "--scenes", scenes,
            "Scenes to time, of gas, fluid, tunnel (default all). Only the tunnel points: --scenes tunnel; "
            "e.g. --scenes tunnel --tunnel 100000 1000000 10000000, or --tunnel 20000 on llvmpipe")
         ->check(CLI::IsMember({"gas", "fluid", "tunnel"}));
-    app.add_option("--cpu-max", cpuMax, "Largest N also timed on the CPU model (0: none)");
-    app.add_option("--repeats", settings.repeats, "Timed repeats per point; the median is reported");
-    app.add_option("--seconds", settings.targetSeconds, "Target seconds per repeat");
+    app.add_option("--cpu-max", cpuMax, "Largest N also timed on the CPU model (0: none)")
+        ->transform(wholeNumber(0, std::max({maxGasSize(), maxFluidSize(), maxTunnelSize()}),
+                                "the largest size of any scene"));
+    app.add_option("--repeats", settings.repeats, "Timed repeats per point; the median is reported")
+        ->transform(wholeNumber(1, kMaxRepeats));
+    app.add_option("--seconds", settings.targetSeconds, "Target seconds per repeat")
+        ->check(positiveReal(false, kMaxTargetSeconds));
     settings.maxSettleSeconds = 8.0;
     app.add_option("--settle", settings.maxSettleSeconds,
-                   "Longest seconds a point steps before its repeats, until two batches agree within 3 %");
-    app.add_option("--out", out, "Also write the JSON lines to this file");
+                   "Longest seconds a point steps before its repeats, until two batches agree within 3 %")
+        ->check(positiveReal(true, kMaxTargetSeconds));
+    app.add_option("--out", out,
+                   "Also write the JSON lines to this file, each as it is measured (checked before the "
+                   "sweep: a directory, a FIFO or a path that cannot be created is refused with exit 4)")
+        ->check(pl::cli::fileName());
     std::vector<unsigned> forceLanes{0};
     app.add_option(
            "--force-lanes", forceLanes,
@@ -84,12 +143,45 @@ int main(int argc, char** argv) {
         std::cerr << "particlelab-bench: " << e.what() << "; see 'particlelab-bench --help'\n";
         return 2; // a bad option, as particlelab-cli answers it
     }
-
-    std::ofstream file;
-    if (!out.empty()) file.open(out);
+    // Every point is checked before the first one runs, and so is the file: a sweep never ends in either.
+    struct SizeOption {
+        const char* option;
+        std::string scene;
+        const std::vector<std::size_t>* sizes;
+    };
+    for (const SizeOption& o :
+         {SizeOption{"--gas", "gas", &gasSizes}, SizeOption{"--fluid", "fluid", &fluidSizes},
+          SizeOption{"--tunnel", "tunnel", &tunnelSizes}})
+        if (std::find(scenes.begin(), scenes.end(), o.scene) != scenes.end())
+            for (const std::size_t n : *o.sizes)
+                if (const std::string refusal = pointRefusal(o.scene, n); !refusal.empty()) {
+                    std::cerr << "particlelab-bench: " << o.option << " " << n << ": " << refusal << "\n";
+                    return 2;
+                }
+    std::unique_ptr<pl::StreamedFile> file; // each line reaches the file as it is measured
+    try {
+        if (!out.empty()) {
+            pl::checkOutputPath(out);
+            file = std::make_unique<pl::StreamedFile>(out);
+        }
+    } catch (const pl::FileError& e) {
+        std::cerr << "particlelab-bench: " << e.what() << "\n";
+        return 4; // an output that cannot be written, as particlelab-cli answers it
+    }
+    int exitCode = 0;
+    // A file that fails while the sweep runs (a full disk) is reported once; the lines go on to stdout.
+    const auto fileFailed = [&](const pl::FileError& e) {
+        std::cerr << "particlelab-bench: " << e.what() << "; the lines go on to standard output only\n";
+        file.reset();
+        exitCode = 4;
+    };
     auto emit = [&](const nlohmann::json& j) {
         std::cout << j.dump() << std::endl;
-        if (file) file << j.dump() << '\n';
+        try {
+            if (file) file->write(j.dump() + '\n');
+        } catch (const pl::FileError& e) {
+            fileFailed(e);
+        }
     };
     std::shared_ptr<pl::gl::GlContext> context;
     try {
@@ -186,5 +278,10 @@ int main(int argc, char** argv) {
         std::printf("%-6s %-4s %10zu %14.4g %10.2f %10.2f %6d\n", p.scene.c_str(), p.backend.c_str(),
                     p.particles, p.particleStepsPerSecond, p.microsecondsPerStep, p.issueMicrosecondsPerStep,
                     p.dispatchesPerStep);
-    return 0;
+    try {
+        if (file) file->close();
+    } catch (const pl::FileError& e) {
+        fileFailed(e);
+    }
+    return exitCode;
 }

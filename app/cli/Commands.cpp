@@ -1,5 +1,6 @@
 // Implementation of the CLI subcommands on top of the model catalog.
 #include "Commands.h"
+#include "OptionChecks.h"
 #include "RunSupport.h"
 #include "common/Snapshot.h"
 
@@ -49,18 +50,15 @@ void setThreads(int threads) {
 // snapshot file continues where it was taken, so it takes no --set or --seed (they would restart it).
 std::unique_ptr<Model> prepare(const std::string& name, const std::vector<std::string>& sets,
                                std::optional<std::uint64_t> seed, const std::string& backend) {
-    Snapshot snapshot;
-    const bool continues = isSnapshotFile(name);
+    auto [snapshot, continues] = openExperiment(name);
     if (continues) {
         if (!sets.empty() || seed)
             throw std::invalid_argument("'" + name +
                                         "' is a snapshot: it continues as it was saved, without --set or "
                                         "--seed (change parameters in a preset instead)");
-        snapshot = readSnapshotFile(name, specsForModel);
     } else {
         if (const std::string notice = presetRenameNotice(name); !notice.empty())
             std::cerr << "particlelab-cli: " << notice << '\n';
-        snapshot.preset = loadPreset(name);
         applySets(snapshot.preset, sets);
         if (seed) snapshot.preset.seed = *seed;
     }
@@ -197,11 +195,21 @@ int listColumns(const std::string& sceneOrPreset) {
 
 namespace {
 
+// The files a run writes, each with its option.
+std::vector<NamedFile> runOutputs(const RunOptions& options) {
+    return {{"--out", options.out},
+            {"--histogram", options.histogram},
+            {"--dump-initial", options.dumpInitial},
+            {"--dump-final", options.dumpFinal},
+            {"--snapshot", options.snapshot},
+            {"--fields", options.fields},
+            {"--surface", options.surface}};
+}
+
 // Every file a run writes is checked before it starts: a long run never ends in an unwritable path.
 void checkRunOutputs(const RunOptions& options) {
-    for (const std::string* path : {&options.out, &options.histogram, &options.dumpInitial,
-                                    &options.dumpFinal, &options.snapshot, &options.fields, &options.surface})
-        if (!path->empty()) checkOutputPath(*path);
+    for (const NamedFile& output : runOutputs(options))
+        if (!output.path.empty()) checkOutputPath(output.path);
 }
 
 void warnIfInaccurate(const Model& model) {
@@ -212,8 +220,15 @@ void warnIfInaccurate(const Model& model) {
 } // namespace
 
 int runSimulation(const RunOptions& options) {
+    StopSignals stop; // a signal from here on ends the set-up at once, saying so
     setThreads(options.threads);
     std::unique_ptr<Model> model;
+    if (const std::string refusal =
+            sharedFileRefusal(runOutputs(options), {{"the input", experimentFile(options.preset)}});
+        !refusal.empty()) {
+        std::cerr << "particlelab-cli: " << refusal << "\n";
+        return kBadInput;
+    }
     try {
         checkRunOutputs(options);
     } catch (const FileError& e) {
@@ -237,7 +252,7 @@ int runSimulation(const RunOptions& options) {
         return kBadInput;
     }
     warnIfInaccurate(*model);
-    const StopSignals stop;
+    stop.runStarts(); // a signal from here on stops the run after its step, keeping what it measured
     long long sampled = 0;
     try {
         writeText(options.dumpInitial, [&] { return particlesCsv(*model); });
@@ -270,8 +285,14 @@ int runSimulation(const RunOptions& options) {
         writeText(options.histogram, [&] { return histogramsCsv(*model); });
         writeText(options.dumpFinal, [&] { return particlesCsv(*model); });
         writeText(options.fields, [&] { return fieldsCsv(*model); });
-        writeText(options.snapshot,
-                  [&] { return serializeSnapshot(takeSnapshot(*model), model->paramSpecs()); });
+        writeText(options.snapshot, [&] {
+            std::string text = serializeSnapshot(takeSnapshot(*model), model->paramSpecs());
+            if (text.size() > kMaxSnapshotFileBytes) // kept whole all the same: nothing measured is lost
+                std::cerr << "particlelab-cli: warning: the snapshot '" << options.snapshot << "' holds "
+                          << byteSize(text.size()) << ", more than the " << byteSize(kMaxSnapshotFileBytes)
+                          << " that `run FILE` and the app read back; use fewer particles to continue it\n";
+            return text;
+        });
     } catch (const FileError& e) {
         std::cerr << "particlelab-cli: " << e.what() << "\n";
         return kCannotWrite;
@@ -322,6 +343,12 @@ gas::SweepResult sweepFromPreset(const SweepOptions& options) {
 }
 
 int integratorSweep(const SweepOptions& options) {
+    if (const std::string refusal =
+            sharedFileRefusal({{"--out", options.out}}, {{"--from", experimentFile(options.from)}});
+        !refusal.empty()) {
+        std::cerr << "particlelab-cli: " << refusal << "\n";
+        return kBadInput;
+    }
     gas::SweepResult result;
     try {
         result = options.from.empty()

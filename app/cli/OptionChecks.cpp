@@ -1,6 +1,9 @@
 // Validators for CLI11: strict whole numbers and reals with short bounds in their messages.
 #include "OptionChecks.h"
 
+#include "common/AtomicFile.h"
+#include "common/ParamSpec.h"
+
 #include <charconv>
 #include <cmath>
 #include <omp.h>
@@ -55,18 +58,21 @@ CLI::Validator wholeNumber(long long lo, long long hi, const std::string& why) {
         "INT in " + std::to_string(lo) + "…" + std::to_string(hi));
 }
 
-CLI::Validator positiveReal(bool zeroAllowed) {
+CLI::Validator positiveReal(bool zeroAllowed, double most) {
+    const bool bounded = std::isfinite(most);
     return CLI::Validator(
-        [zeroAllowed](std::string& text) -> std::string {
+        [zeroAllowed, most, bounded](std::string& text) -> std::string {
             double value = 0;
             const std::string wanted =
-                zeroAllowed ? "a finite number of at least 0" : "a finite number above 0";
+                std::string(zeroAllowed ? "a finite number of at least 0" : "a finite number above 0") +
+                (bounded ? " and at most " + formatNumber(most) : "");
             if (!parseStrictNumber(text, value) || !std::isfinite(value) || value < 0 ||
-                (!zeroAllowed && value == 0))
+                (!zeroAllowed && value == 0) || value > most)
                 return "must be " + wanted + ", got " + echoed(text);
             return {};
         },
-        zeroAllowed ? "NUMBER ≥ 0" : "NUMBER > 0");
+        std::string(zeroAllowed ? "NUMBER ≥ 0" : "NUMBER > 0") +
+            (bounded ? ", ≤ " + formatNumber(most) : ""));
 }
 
 CLI::Validator fileName() {
@@ -80,6 +86,26 @@ CLI::Validator threadCount() {
                        "at most 4 × the " + std::to_string(omp_get_num_procs()) +
                            " cores of this machine: more threads only wait for each other and can "
                            "exhaust what the system allows");
+}
+
+std::string sharedFileRefusal(const std::vector<NamedFile>& outputs, const std::vector<NamedFile>& inputs) {
+    const auto shown = [](const NamedFile& a, const NamedFile& b) {
+        return a.path == b.path ? "'" + a.path + "'"
+                                : "'" + a.path + "' and '" + b.path + "', which are one file";
+    };
+    for (std::size_t i = 0; i < outputs.size(); ++i) {
+        const NamedFile& out = outputs[i];
+        if (out.path.empty()) continue;
+        for (const NamedFile& in : inputs)
+            if (!in.path.empty() && sameFile(out.path, in.path))
+                return out.option + " and " + in.option + " name " + shown(out, in) +
+                       ": the output would replace what the run reads; write it to another file";
+        for (std::size_t j = 0; j < i; ++j)
+            if (!outputs[j].path.empty() && sameFile(outputs[j].path, out.path))
+                return outputs[j].option + " and " + out.option + " name " + shown(outputs[j], out) +
+                       ": one output would replace the other; give each a file of its own";
+    }
+    return {};
 }
 
 } // namespace pl::cli

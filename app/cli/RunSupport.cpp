@@ -7,14 +7,29 @@
 #include <csignal>
 #include <sstream>
 #include <stdexcept>
+#include <unistd.h>
 
 namespace pl::cli {
 
 namespace {
 
 volatile std::sig_atomic_t caughtSignal = 0;
+volatile std::sig_atomic_t settingUp = 0;
+
+// What a signal during the set-up says; written with write(2), which a signal handler may call.
+constexpr char kSetUpStoppedByInt[] =
+    "particlelab-cli: stopped by SIGINT while setting up the experiment; nothing was written\n";
+constexpr char kSetUpStoppedByTerm[] =
+    "particlelab-cli: stopped by SIGTERM while setting up the experiment; nothing was written\n";
 
 extern "C" void onStopSignal(int signal) {
+    if (settingUp) {
+        const bool interrupt = signal == SIGINT;
+        [[maybe_unused]] const ssize_t written =
+            ::write(2, interrupt ? kSetUpStoppedByInt : kSetUpStoppedByTerm,
+                    interrupt ? sizeof kSetUpStoppedByInt - 1 : sizeof kSetUpStoppedByTerm - 1);
+        ::_exit(128 + signal);
+    }
     caughtSignal = signal;
 }
 
@@ -45,6 +60,7 @@ std::vector<std::size_t> forceColumnsIn(const std::vector<std::string>& seriesCo
 
 StopSignals::StopSignals() {
     caughtSignal = 0;
+    settingUp = 1;
     struct sigaction action {};
     action.sa_handler = onStopSignal;
     sigemptyset(&action.sa_mask);
@@ -54,6 +70,11 @@ StopSignals::StopSignals() {
 
 StopSignals::~StopSignals() {
     for (int i = 0; i < 2; ++i) sigaction(kStopSignals[i], &previous[i], nullptr);
+    settingUp = 0;
+}
+
+void StopSignals::runStarts() {
+    settingUp = 0;
 }
 
 int StopSignals::caught() const {

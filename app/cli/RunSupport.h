@@ -1,5 +1,6 @@
-// What a CLI run needs to lose nothing: SIGINT and SIGTERM stop it between steps, and the time series
-// (and the wind tunnel's body forces) go to their files row by row as they are sampled.
+// What a CLI run needs to lose nothing: SIGINT and SIGTERM end its set-up at once with a sentence and stop
+// its steps between two, and the time series (and the wind tunnel's body forces) go to their files row by
+// row as they are sampled.
 #pragma once
 
 #include "common/AtomicFile.h"
@@ -11,14 +12,18 @@
 
 namespace pl::cli {
 
-// Catches SIGINT and SIGTERM for the life of the object: the first one asks the run to stop after its
-// current step; a second one of the same kind ends the process at once, as without this.
+// Catches SIGINT and SIGTERM for the life of the object. While the experiment is set up (reading, checks,
+// building the model: nothing is written yet) a signal ends the process at once with one sentence on
+// stderr and the shell's exit code (130, 143). Once runStarts() is called, the first one asks the run to
+// stop after its current step; a second one of the same kind ends the process at once, as without this.
 class StopSignals {
 public:
     StopSignals();
     ~StopSignals();
     StopSignals(const StopSignals&) = delete;
     StopSignals& operator=(const StopSignals&) = delete;
+
+    void runStarts(); // from here a signal is caught() instead of ending the set-up
 
     int caught() const;                                      // the signal's number, 0 while none came
     static std::string name(int signal);                     // "SIGINT"

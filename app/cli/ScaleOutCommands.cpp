@@ -35,18 +35,11 @@ int fail(int code, const std::string& message) {
 }
 
 // The experiment of a built-in name, a preset file or a snapshot file (then with its saved state), with
-// --set and --seed applied. Throws PresetError or FileError.
+// --set and --seed applied. Throws PresetError.
 Preset loadExperiment(const ScaleOutOptions& options, std::optional<StateRecord>& state) {
-    Preset preset;
-    std::error_code error;
-    if (std::filesystem::is_regular_file(options.preset, error) &&
-        isSnapshotJson(readWholeFile(options.preset))) {
-        Snapshot snapshot = readSnapshotFile(options.preset, specsForModel);
-        preset = std::move(snapshot.preset);
-        state = std::move(snapshot.state);
-    } else {
-        preset = loadPreset(options.preset);
-    }
+    auto [snapshot, isSnapshot] = openExperiment(options.preset);
+    Preset preset = std::move(snapshot.preset);
+    if (isSnapshot) state = std::move(snapshot.state);
     applySets(preset, options.sets);
     if (options.seed) preset.seed = *options.seed;
     return preset;
@@ -93,6 +86,23 @@ int exportDeck(const ScaleOutOptions& options, const std::string& dir, bool quie
         std::cerr << "  run it: cd " << dir << " && " << deck.command << "\n";
     }
     return kOk;
+}
+
+// import and run-lammps write a series and a histogram: refused (bad input) before anything is read or
+// written when the two are one file or one of them is a file the command reads.
+std::optional<int> refuseSharedFiles(const ScaleOutOptions& options, const std::vector<NamedFile>& inputs) {
+    const std::string refusal =
+        sharedFileRefusal({{"--out", options.out}, {"--histogram", options.histogram}}, inputs);
+    if (refusal.empty()) return std::nullopt;
+    return fail(kBadInput, refusal);
+}
+
+// The files an import reads from the deck's folder dir, with what they are.
+std::vector<NamedFile> importedFiles(const std::string& dir, const char* log, const char* dump) {
+    const auto in = [&dir](const char* name) { return (std::filesystem::path(dir) / name).string(); };
+    return {{"the run's log", in(log)},
+            {"the run's dump", in(dump)},
+            {"the exported experiment", in(scaleout::kExperimentFile)}};
 }
 
 // The histogram of an imported run's last state and its series, in the files `run` would write.
@@ -169,10 +179,16 @@ int exportSparta(const ScaleOutOptions& options) {
 }
 
 int importLammps(const ScaleOutOptions& options) {
+    if (const auto refused = refuseSharedFiles(
+            options, importedFiles(options.dir, scaleout::kLammpsLog, scaleout::kLammpsDump)))
+        return *refused;
     return writeImported(options.dir, options);
 }
 
 int importSparta(const ScaleOutOptions& options) {
+    if (const auto refused = refuseSharedFiles(
+            options, importedFiles(options.dir, scaleout::kSpartaLog, scaleout::kSpartaDump)))
+        return *refused;
     scaleout::ImportedCell run;
     try {
         run = scaleout::importSpartaRun(options.dir);
@@ -184,6 +200,8 @@ int importSparta(const ScaleOutOptions& options) {
 }
 
 int runLammps(const ScaleOutOptions& options) {
+    if (const auto refused = refuseSharedFiles(options, {{"the input", experimentFile(options.preset)}}))
+        return *refused;
     if (const std::string missing = scaleout::missingLammpsProgram(); !missing.empty())
         return fail(kBadInput, missing + " not found on PATH: run-lammps needs LAMMPS and MPI (Debian: apt "
                                          "install lammps openmpi-bin)");

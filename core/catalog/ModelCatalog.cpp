@@ -3,6 +3,7 @@
 
 #include "common/AtomicFile.h"
 #include "common/EmbeddedFiles.h"
+#include "common/InputLimits.h"
 #include "common/PresetMigration.h"
 
 #include <filesystem>
@@ -145,13 +146,35 @@ std::unique_ptr<Model> instantiate(const Snapshot& snapshot) {
 }
 
 bool isSnapshotFile(const std::string& path) {
-    if (builtinNamed(path)) return false;
-    if (!std::filesystem::is_regular_file(path)) return false;
+    if (experimentFile(path).empty()) return false;
     try {
-        return isSnapshotJson(readWholeFile(path));
+        return isSnapshotJson(readWholeFile(path, kMaxSnapshotFileBytes));
     } catch (const FileError&) {
         return false; // reading it as a preset then reports why
     }
+}
+
+std::string experimentFile(const std::string& nameOrPath) {
+    std::error_code error;
+    if (builtinNamed(nameOrPath) || !std::filesystem::exists(nameOrPath, error)) return {};
+    return nameOrPath;
+}
+
+OpenedExperiment openExperiment(const std::string& nameOrPath) {
+    const std::string path = experimentFile(nameOrPath);
+    if (path.empty()) return {{loadPreset(nameOrPath), {}}, false}; // a built-in one, or why there is none
+    std::string text;
+    try {
+        text = readWholeFile(path, kMaxSnapshotFileBytes, "a preset or snapshot file");
+    } catch (const FileError& e) {
+        throw PresetError("", e.what());
+    }
+    if (isSnapshotJson(text)) return {parseSnapshot(text, specsForModel, path), true};
+    if (text.size() > kMaxPresetFileBytes)
+        throw PresetError("", "will not read '" + path + "': it holds " + byteSize(text.size()) +
+                                  ", more than the " + byteSize(kMaxPresetFileBytes) +
+                                  " that a preset file may hold");
+    return {{parsePreset(text, specsForModel, path), {}}, false};
 }
 
 } // namespace pl

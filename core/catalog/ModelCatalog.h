@@ -57,7 +57,22 @@ std::unique_ptr<Model> instantiate(const Preset& preset);
 // taken. Throws PresetError.
 std::unique_ptr<Model> instantiate(const Snapshot& snapshot);
 
-// Whether the file at path is a snapshot (else it is read as a preset). False for a built-in name.
+// Whether the file at path is a snapshot (else it is read as a preset). False for a built-in name, and
+// for what is not a regular file or is too large to be read (reading it as a preset then says why).
 bool isSnapshotFile(const std::string& path);
+
+// The file that `run NAME` and the app's Open read for nameOrPath; empty for a built-in preset's name
+// (or old name) and for a name that is no file.
+std::string experimentFile(const std::string& nameOrPath);
+
+// An experiment as the CLI and the app open it: a built-in preset, a preset file or a snapshot file, each
+// file read once, bounded (InputLimits.h: a regular file, at most kMaxPresetFileBytes for a preset and
+// kMaxSnapshotFileBytes for a snapshot, JSON at most kMaxJsonDepth deep). isSnapshot says the state is
+// the snapshot's, to continue from. Throws PresetError with a sentence naming the file.
+struct OpenedExperiment {
+    Snapshot snapshot; // the preset and, when isSnapshot, its saved state
+    bool isSnapshot = false;
+};
+OpenedExperiment openExperiment(const std::string& nameOrPath);
 
 } // namespace pl

@@ -3,12 +3,12 @@
 #include "AtomicFile.h"
 
 #include <cerrno>
+#include <csignal>
 #include <cstring>
 #include <ctime>
 #include <dirent.h>
 #include <fcntl.h>
-#include <fstream>
-#include <sstream>
+#include <filesystem>
 #include <sys/file.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -17,11 +17,15 @@ namespace pl {
 
 namespace {
 
-// Temporary files are named target + kTempMark + six characters of mkstemp; a writer holds an exclusive
-// flock on its own while it lives, so one that nobody holds belongs to a process that died.
+// Temporary files are named target + kTempMark + the writer's process id + '-' + six characters of
+// mkstemp ("s.csv.tmp-4711-a8Zq0B"); a writer holds an exclusive flock on its own while it lives. One whose
+// process is gone and that nobody holds is removed at once, whatever its age. Builds before the process id
+// was in the name wrote target + kTempMark + six characters: those, and those of a process id that lives
+// (perhaps reused), are removed once nobody holds them and they are not brand new.
 constexpr const char* kTempMark = ".tmp-";
 constexpr int kTempRandom = 6;
-// A temporary file this young may belong to a writer between mkstemp and flock: it is left alone.
+// A temporary file this young may belong to a writer between mkstemp and flock: it is left alone unless
+// its process is gone.
 constexpr std::time_t kStaleSeconds = 10;
 constexpr int kMaxLinkHops = 40; // as the kernel's own limit on a chain of links
 
@@ -57,18 +61,36 @@ void syncFolder(const std::string& folder) {
     ::close(fd);
 }
 
-bool isTempName(const std::string& entry, const std::string& base) {
-    const std::string prefix = base + kTempMark;
-    if (entry.size() != prefix.size() + kTempRandom || entry.compare(0, prefix.size(), prefix) != 0)
-        return false;
-    for (std::size_t i = prefix.size(); i < entry.size(); ++i) {
-        const char c = entry[i];
+bool isTempRandom(const std::string& text) {
+    if (text.size() != kTempRandom) return false;
+    for (const char c : text)
         if (!((c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9'))) return false;
-    }
     return true;
 }
 
-// Removes temporary files of target that no living writer holds and that are not brand new.
+// Whether entry is a temporary file of base; pid receives its writer's process id, or 0 for a name of an
+// earlier build that holds none.
+bool isTempName(const std::string& entry, const std::string& base, pid_t& pid) {
+    const std::string prefix = base + kTempMark;
+    if (entry.size() <= prefix.size() || entry.compare(0, prefix.size(), prefix) != 0) return false;
+    const std::string rest = entry.substr(prefix.size());
+    pid = 0;
+    const auto dash = rest.find('-');
+    if (dash == std::string::npos) return isTempRandom(rest);
+    if (dash == 0 || dash > 9) return false; // a process id has at most 7 digits (pid_max ≤ 2²²)
+    for (std::size_t i = 0; i < dash; ++i) {
+        if (rest[i] < '0' || rest[i] > '9') return false;
+        pid = pid * 10 + (rest[i] - '0');
+    }
+    return pid > 0 && isTempRandom(rest.substr(dash + 1));
+}
+
+bool processIsGone(pid_t pid) {
+    return pid > 0 && ::kill(pid, 0) != 0 && errno == ESRCH;
+}
+
+// Removes temporary files of target that no living writer holds: at once when the process that made
+// them is gone, else once they are not brand new.
 void removeStaleTemps(const std::string& target) {
     const std::string folder = folderOf(target), base = nameOf(target);
     DIR* dir = ::opendir(folder.c_str());
@@ -76,11 +98,12 @@ void removeStaleTemps(const std::string& target) {
     const std::time_t now = std::time(nullptr);
     while (const dirent* entry = ::readdir(dir)) {
         const std::string name = entry->d_name;
-        if (!isTempName(name, base)) continue;
+        pid_t pid = 0;
+        if (!isTempName(name, base, pid)) continue;
         const std::string path = folder + "/" + name;
         struct stat st {};
-        if (::lstat(path.c_str(), &st) != 0 || !S_ISREG(st.st_mode) || now - st.st_mtime < kStaleSeconds)
-            continue;
+        if (::lstat(path.c_str(), &st) != 0 || !S_ISREG(st.st_mode)) continue;
+        if (!processIsGone(pid) && now - st.st_mtime < kStaleSeconds) continue;
         const int fd = ::open(path.c_str(), O_RDONLY | O_NOFOLLOW | O_CLOEXEC);
         if (fd < 0) continue;
         if (::flock(fd, LOCK_EX | LOCK_NB) == 0) ::unlink(path.c_str());
@@ -91,14 +114,45 @@ void removeStaleTemps(const std::string& target) {
 
 // A new temporary file beside target, locked; returns its descriptor and fills temp, or throws.
 int createTemp(const std::string& path, const std::string& target, std::string& temp) {
-    temp = target + kTempMark + std::string(kTempRandom, 'X');
+    temp = target + kTempMark + std::to_string(::getpid()) + "-" + std::string(kTempRandom, 'X');
     const int fd = ::mkstemp(temp.data());
     if (fd < 0) throw FileError("cannot write '" + path + "': " + systemReason());
     ::flock(fd, LOCK_EX);
     return fd;
 }
 
+// What a path names once written: the device and inode of the file there (through links), or, for a file
+// not there yet, its folder after links and its name.
+struct FileIdentity {
+    bool exists = false;
+    dev_t device = 0;
+    ino_t inode = 0;
+    std::string where;
+};
+
+FileIdentity identityOf(const std::string& path) {
+    std::string target = path;
+    try {
+        target = outputTarget(path);
+    } catch (const FileError&) {
+        // not a regular file, or a link that cannot be followed: compared as it is
+    }
+    struct stat st {};
+    if (::stat(target.c_str(), &st) == 0) return {true, st.st_dev, st.st_ino, {}};
+    std::error_code error;
+    std::filesystem::path folder = std::filesystem::absolute(folderOf(target), error);
+    if (std::filesystem::path resolved = std::filesystem::weakly_canonical(folder, error); !error)
+        folder = std::move(resolved);
+    return {false, 0, 0, (folder / nameOf(target)).lexically_normal().string()};
+}
+
 } // namespace
+
+bool sameFile(const std::string& a, const std::string& b) {
+    const FileIdentity x = identityOf(a), y = identityOf(b);
+    if (x.exists != y.exists) return false;
+    return x.exists ? x.device == y.device && x.inode == y.inode : x.where == y.where;
+}
 
 std::string outputTarget(const std::string& path) {
     if (path.empty()) throw FileError("cannot write a file without a name");
@@ -124,6 +178,7 @@ std::string outputTarget(const std::string& path) {
 
 void checkOutputPath(const std::string& path) {
     const std::string target = outputTarget(path);
+    removeStaleTemps(target);
     if (::access(target.c_str(), F_OK) == 0 && ::access(target.c_str(), W_OK) != 0)
         throw FileError("cannot write '" + path + "': " + systemReason());
     std::string temp;
@@ -167,13 +222,39 @@ void writeFileAtomically(const std::string& path, std::string_view content) {
     syncFolder(folderOf(target));
 }
 
-std::string readWholeFile(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw FileError("cannot open '" + path + "': " + systemReason());
-    std::ostringstream buffer;
-    buffer << in.rdbuf();
-    if (in.bad()) throw FileError("cannot read '" + path + "': " + systemReason());
-    return buffer.str();
+std::string readWholeFile(const std::string& path, std::size_t maxBytes, const std::string& what) {
+    // O_NONBLOCK: a FIFO opens at once instead of waiting for a writer, and is refused below.
+    const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+    if (fd < 0) throw FileError("cannot open '" + path + "': " + systemReason());
+    const auto refuse = [&](const std::string& why) {
+        ::close(fd);
+        throw FileError(why);
+    };
+    const auto tooLarge = [&](std::size_t size) {
+        refuse("will not read '" + path + "': it holds " + byteSize(size) + ", more than the " +
+               byteSize(maxBytes) + " that " + what + " may hold");
+    };
+    struct stat st {};
+    if (::fstat(fd, &st) != 0) refuse("cannot read '" + path + "': " + systemReason());
+    if (!S_ISREG(st.st_mode))
+        refuse("will not read '" + path + "': it is " + kindOf(st.st_mode) +
+               ", and only regular files are read");
+    if (static_cast<std::size_t>(st.st_size) > maxBytes) tooLarge(static_cast<std::size_t>(st.st_size));
+    std::string text;
+    text.reserve(static_cast<std::size_t>(st.st_size));
+    char buffer[1 << 16];
+    for (;;) {
+        const ssize_t n = ::read(fd, buffer, sizeof buffer);
+        if (n == 0) break;
+        if (n < 0) {
+            if (errno == EINTR) continue;
+            refuse("cannot read '" + path + "': " + systemReason());
+        }
+        text.append(buffer, static_cast<std::size_t>(n));
+        if (text.size() > maxBytes) tooLarge(text.size()); // it grew since fstat, or says no size (/proc)
+    }
+    ::close(fd);
+    return text;
 }
 
 StreamedFile::StreamedFile(const std::string& path) : path_(path) {

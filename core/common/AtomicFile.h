@@ -1,7 +1,10 @@
 // Writing files so that a crash or a full disk never leaves a half-written file behind, and never
-// replaces what is not a regular file.
+// replaces what is not a regular file; reading only regular files, of a bounded size.
 #pragma once
 
+#include "InputLimits.h"
+
+#include <cstddef>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -19,20 +22,30 @@ public:
 std::string outputTarget(const std::string& path);
 
 // Checks before a long run that path can be written: its target is absent or a regular file it may
-// write, and a file can be created beside it (one is created and removed). Throws FileError naming the
-// path and why.
+// write, and a file can be created beside it (one is created and removed). Temporary files of earlier
+// writes to it that a killed process left are removed first (as writeFileAtomically does). Throws
+// FileError naming the path and why.
 void checkOutputPath(const std::string& path);
+
+// Whether two paths name one file once written: the same file through symbolic and hard links, or for a
+// file that is not there yet, the same name in the same folder (after links). Paths that cannot be
+// resolved (a missing folder) are compared as written, made absolute.
+bool sameFile(const std::string& a, const std::string& b);
 
 // Writes content to a temporary file beside the target (outputTarget), flushes it to disk, renames it
 // over the target and flushes the folder, so that the file is the old one or the new one, whole, even
 // after a crash. The target keeps its permissions (a new file gets 0666 less the umask). The temporary
-// file is removed on every failure, and temporary files of earlier writes to the same path that a
-// killed process left are removed first. Throws FileError naming the path and the system's reason; the
-// old file stays intact on failure.
+// file (target.tmp-PID-XXXXXX) is removed on every failure, and temporary files of earlier writes to the
+// same path whose process is gone are removed first, whatever their age. Throws FileError naming the
+// path and the system's reason; the old file stays intact on failure.
 void writeFileAtomically(const std::string& path, std::string_view content);
 
-// Reads a whole file; throws FileError naming the path and the system's reason.
-std::string readWholeFile(const std::string& path);
+// Reads a whole regular file of at most maxBytes [bytes]. Throws FileError naming the path and why: the
+// system's reason, or at once, before a byte is read, for what is not a regular file (a FIFO, a device, a
+// directory: nothing blocks) and for a file larger than maxBytes ("… more than the 16 MiB that a preset
+// file may hold"; what names the kind of file).
+std::string readWholeFile(const std::string& path, std::size_t maxBytes = kMaxSnapshotFileBytes,
+                          const std::string& what = "a preset or snapshot file");
 
 // A file written piece by piece where each piece reaches the operating system at once (no buffer in the
 // process), so a killed or interrupted process leaves every piece it wrote: the CLI's time series,

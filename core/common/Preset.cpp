@@ -2,6 +2,7 @@
 #include "Preset.h"
 
 #include "AtomicFile.h"
+#include "InputLimits.h"
 #include "PresetMigration.h"
 
 #include <cmath>
@@ -180,6 +181,7 @@ OrderedJson valueToJson(const ParamSpec& spec, const ParamValue& value) {
 } // namespace
 
 Preset parsePreset(std::string_view text, const SpecLookup& specsFor, const std::string& source) {
+    checkJsonDepth(text, source); // before anything parses, copies or prints the JSON, all recursively
     Json root;
     if (const std::string duplicate = DuplicateKeyFinder::find(text); !duplicate.empty())
         fail(source, duplicate, "duplicate key '" + duplicate + "': each key may be given only once");
@@ -281,7 +283,7 @@ std::string serializePreset(const Preset& preset, const std::vector<ParamSpec>& 
 Preset readPresetFile(const std::string& path, const SpecLookup& specsFor) {
     std::string text;
     try {
-        text = readWholeFile(path);
+        text = readWholeFile(path, kMaxPresetFileBytes, "a preset file");
     } catch (const FileError& e) {
         throw PresetError("", e.what());
     }

@@ -41,13 +41,15 @@ using SpecLookup = std::function<const std::vector<ParamSpec>*(const std::string
 // Parses and validates preset JSON: syntax, schema version, model, every key, type, range and finiteness.
 // A file of an older schema (kOldestSchema up) is migrated to kSchema first: renamed keys and changed
 // types keep their meaning (PresetMigration.h), and errors name the entry as the file spells it.
-// Throws PresetError with a message naming the entry and what is allowed. sourceName prefixes messages.
+// Throws PresetError with a message naming the entry and what is allowed, or the depth of JSON nested
+// deeper than kMaxJsonDepth (InputLimits.h). sourceName prefixes messages.
 Preset parsePreset(std::string_view json, const SpecLookup& specsFor,
                    const std::string& sourceName = "preset");
 
 // Serialises as schema kSchema with parameters in spec order (every parameter written, defaults included).
 std::string serializePreset(const Preset& preset, const std::vector<ParamSpec>& specs);
 
+// Reads a regular file of at most kMaxPresetFileBytes (InputLimits.h) and parses it; throws PresetError.
 Preset readPresetFile(const std::string& path, const SpecLookup& specsFor);
 void writePresetFile(const std::string& path, const Preset& preset, const std::vector<ParamSpec>& specs);
 

@@ -2,6 +2,7 @@
 #include "Snapshot.h"
 
 #include "AtomicFile.h"
+#include "InputLimits.h"
 
 #include <cmath>
 #include <limits>
@@ -31,6 +32,11 @@ Snapshot takeSnapshot(const Model& model) {
 }
 
 bool isSnapshotJson(std::string_view json) {
+    try {
+        checkJsonDepth(json, "");
+    } catch (const PresetError&) {
+        return false; // no snapshot nests that deep: read as a preset, it is refused naming the depth
+    }
     const Json root = Json::parse(json.begin(), json.end(), nullptr, false);
     return root.is_object() && root.contains("snapshot_schema");
 }
@@ -51,6 +57,7 @@ std::string serializeSnapshot(const Snapshot& snapshot, const std::vector<ParamS
 }
 
 Snapshot parseSnapshot(std::string_view json, const SpecLookup& specsFor, const std::string& sourceName) {
+    checkJsonDepth(json, sourceName); // before the preset part is printed and parsed again, recursively
     const Json root = Json::parse(json.begin(), json.end(), nullptr, false);
     if (root.is_discarded()) throw PresetError("", sourceName + ": not valid JSON");
     if (!root.is_object() || !root.contains("snapshot_schema"))
@@ -85,7 +92,13 @@ void writeSnapshotFile(const std::string& path, const Model& model) {
 }
 
 Snapshot readSnapshotFile(const std::string& path, const SpecLookup& specsFor) {
-    return parseSnapshot(readWholeFile(path), specsFor, path);
+    std::string text;
+    try {
+        text = readWholeFile(path, kMaxSnapshotFileBytes, "a snapshot");
+    } catch (const FileError& e) {
+        throw PresetError("", e.what());
+    }
+    return parseSnapshot(text, specsFor, path);
 }
 
 } // namespace pl

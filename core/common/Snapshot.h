@@ -25,11 +25,13 @@ bool isSnapshotJson(std::string_view json);
 
 std::string serializeSnapshot(const Snapshot& snapshot, const std::vector<ParamSpec>& specs);
 // Parses and validates the preset part fully and the state's shape (numbers and arrays of numbers).
-// Throws PresetError naming the entry; sourceName prefixes messages.
+// Throws PresetError naming the entry, or the depth of JSON nested deeper than kMaxJsonDepth; sourceName
+// prefixes messages.
 Snapshot parseSnapshot(std::string_view json, const SpecLookup& specsFor, const std::string& sourceName);
 
 // Atomic write of takeSnapshot(model); throws FileError.
 void writeSnapshotFile(const std::string& path, const Model& model);
+// Reads a regular file of at most kMaxSnapshotFileBytes (InputLimits.h) and parses it; throws PresetError.
 Snapshot readSnapshotFile(const std::string& path, const SpecLookup& specsFor);
 
 } // namespace pl

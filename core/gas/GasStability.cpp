@@ -18,11 +18,17 @@ std::string fixed(double v, int digits) {
     return out.str();
 }
 
-// a and b with the fewest decimals (2 at least) that tell them apart, so a value just inside a limit
-// never reads as the limit itself (RK4's 2.8284… against 2√2).
+// The decimals a hint shows at most: a dt·ω that agrees with a limit to these is said to be at it.
+constexpr int kHintDecimals = 4;
+// The share of a stability limit a hint at the limit recommends.
+constexpr double kSafeShareOfLimit = 0.9;
+
+// a and b with the fewest decimals (2 to kHintDecimals) that tell them apart, so a value just inside a
+// limit never reads as the limit itself (RK4's 2.8279 against 2√2 = 2.8284); equal strings when they
+// agree to kHintDecimals decimals.
 std::pair<std::string, std::string> distinct(double a, double b) {
     int digits = 2;
-    while (digits < 17 && fixed(a, digits) == fixed(b, digits)) ++digits;
+    while (digits < kHintDecimals && fixed(a, digits) == fixed(b, digits)) ++digits;
     return {fixed(a, digits), fixed(b, digits)};
 }
 
@@ -63,6 +69,12 @@ std::string GasModel::stabilityHint() const {
                formatNumber(wdt * wdt, 3) + " per contact step) and is unstable at any dt: use " +
                gasIntegrator(GasIntegrator::VelocityVerlet).name;
     const auto [shownWdt, shownLimit] = distinct(wdt, limit); // compared unrounded, shown apart
+    if (shownWdt == shownLimit) // on the limit, to the decimals shown: neither inside nor beyond it
+        return "dt·ω = " + shownWdt + " is at the stability limit " + shownLimit + " of " + name +
+               ", where a contact's oscillation is not damped and any stiffer contact (a deeper overlap) is "
+               "unstable; use |dt| < " +
+               formatNumber(kSafeShareOfLimit * limit / omega, 3) + " (" +
+               formatNumber(100 * kSafeShareOfLimit, 2) + " % of the limit)";
     if (wdt > limit)
         return "dt·ω = " + shownWdt + " > " + shownLimit + ": " + name + " is unstable; use |dt| < " +
                formatNumber(limit / omega, 3) + " (about " + formatNumber(std::acos(-1.0) / wdt, 2) +

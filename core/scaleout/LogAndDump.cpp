@@ -122,6 +122,11 @@ Preset readExportedExperiment(const std::string& dir, const std::string& model) 
 
 std::ifstream openRunFile(const std::string& dir, const std::string& name) {
     const auto path = std::filesystem::path(dir) / name;
+    // A FIFO would block the open and a device never end: only regular files are read (streamed, line by
+    // line, so their size is not bounded).
+    std::error_code error;
+    if (std::filesystem::exists(path, error) && !std::filesystem::is_regular_file(path, error))
+        throw ImportError("will not read " + path.string() + ": it is not a regular file");
     std::ifstream in(path);
     if (!in) throw ImportError("cannot read " + path.string() + " (has the run finished in this folder?)");
     return in;

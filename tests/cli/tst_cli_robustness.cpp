@@ -3,6 +3,7 @@
 // permissions, paths checked first), rows kept when a run is stopped by a signal, strict input syntax.
 #include "CliRunner.h"
 
+#include <QDir>
 #include <QElapsedTimer>
 #include <QFile>
 #include <QRegularExpression>
@@ -104,6 +105,27 @@ private slots:
         QTest::newRow("repeats abc") << QStringList{"--repeats", "abc"} << "--repeats";
         QTest::newRow("unknown scene") << QStringList{"--scenes", "plasma"} << "--scenes: plasma not in";
         QTest::newRow("unknown flag") << QStringList{"--bogus"} << "--bogus";
+        QTest::newRow("gas -5") << QStringList{"--gas", "-5"} << "--gas: must be from 1 to 67108864";
+        QTest::newRow("gas 0") << QStringList{"--gas", "4096", "0"} << "--gas: must be from 1 to";
+        QTest::newRow("gas 1e20") << QStringList{"--gas", "99999999999999999999"}
+                                  << "--gas: must be from 1 to";
+        QTest::newRow("fluid 0") << QStringList{"--fluid", "0"} << "--fluid: must be from 1 to";
+        QTest::newRow("tunnel 0") << QStringList{"--tunnel", "0"} << "--tunnel: must be from 1 to";
+        QTest::newRow("tunnel grid too fine") << QStringList{"--scenes", "tunnel", "--tunnel", "67108864"}
+                                              << "--tunnel 67108864: cells_x × cells_y = ";
+        QTest::newRow("repeats 0") << QStringList{"--repeats", "0"} << "--repeats: must be from 1 to";
+        QTest::newRow("repeats -1") << QStringList{"--repeats", "-1"} << "--repeats: must be from 1 to";
+        QTest::newRow("seconds -1") << QStringList{"--seconds", "-1"}
+                                    << "--seconds: must be a finite number above 0";
+        QTest::newRow("seconds nan") << QStringList{"--seconds", "nan"}
+                                     << "--seconds: must be a finite number";
+        QTest::newRow("seconds 0") << QStringList{"--seconds", "0"}
+                                   << "--seconds: must be a finite number above 0";
+        QTest::newRow("seconds 1e9") << QStringList{"--seconds", "1e9"} << "and at most 60";
+        QTest::newRow("settle -1") << QStringList{"--settle", "-1"}
+                                   << "--settle: must be a finite number of at least 0";
+        QTest::newRow("settle inf") << QStringList{"--settle", "inf"} << "--settle: must be a finite number";
+        QTest::newRow("cpu-max -1") << QStringList{"--cpu-max", "-1"} << "--cpu-max: must be from 0 to";
     }
     void benchBadOptionsAreExit2WithASentence() {
         QFETCH(QStringList, args);
@@ -114,6 +136,26 @@ private slots:
         QCOMPARE(r.exitCode, 2);
         QVERIFY2(r.err.startsWith("particlelab-bench: ") && r.err.contains(message), qPrintable(r.err));
         QVERIFY2(r.out.isEmpty(), qPrintable(r.out)); // nothing measured, no JSON line
+    }
+
+    // The benchmark's file is checked before the sweep: a directory, /proc or a FIFO used to exit 0 having
+    // written nothing (or to block on the FIFO).
+    void benchOutIsCheckedBeforeTheSweep() {
+        QTemporaryDir dir;
+        const QString fifo = dir.filePath("fifo");
+        QVERIFY(::mkfifo(fifo.toUtf8().constData(), 0644) == 0);
+        for (const QString& path : {dir.path(), QString("/proc/particlelab-bench.json"), fifo}) {
+            const auto r = pl::test::runProgram(
+                PARTICLELAB_BENCH,
+                {"--scenes", "gas", "--gas", "64", "--cpu-max", "0", "--repeats", "1", "--out", path}, 20000);
+            QVERIFY2(r.startError.isEmpty(), qPrintable(r.startError));
+            QVERIFY2(!r.crashed && !r.timedOut, qPrintable(path));
+            QCOMPARE(r.exitCode, 4);
+            QVERIFY2(r.err.startsWith("particlelab-bench: ") && r.err.contains(path), qPrintable(r.err));
+            QCOMPARE(r.err.count('\n'), 1);
+            QVERIFY2(r.out.isEmpty(), qPrintable(r.out)); // nothing measured
+        }
+        QVERIFY(QFileInfo(fifo).exists() && !QFileInfo(fifo).isFile()); // the FIFO is still a FIFO
     }
 
     void helpStaysExit0() {
@@ -178,6 +220,19 @@ private slots:
                                      "--set", "stiffness=1e6", "--set", "dt=0.0020001", "--quiet"});
         QCOMPARE(outside.exitCode, 3);
         QVERIFY2(outside.err.contains("dt·ω = 2.829 > 2.828: rk4 is unstable"), qPrintable(outside.err));
+    }
+
+    // A dt·ω equal to RK4's limit 2√2 used to read "2.82842712474619029 is inside the stability limit
+    // 2.82842712474619029": shown to 4 decimals, it is at the limit, and the hint says so.
+    void rk4HintAtTheLimitSaysItIsAtTheLimit() {
+        const auto r = runCli({"run", "gas-classroom", "--steps", "200", "--set", "integrator=rk4", "--set",
+                               "stiffness=1e6", "--set", "dt=0.002", "--quiet"});
+        QCOMPARE(r.exitCode, 3);
+        QVERIFY2(r.err.contains("dt·ω = 2.8284 is at the stability limit 2.8284 of rk4") &&
+                     r.err.contains("use |dt| < 0.0018"),
+                 qPrintable(r.err));
+        QVERIFY2(!r.err.contains(QRegularExpression("\\d\\.\\d{5}")), qPrintable(r.err)); // few digits
+        QVERIFY2(!r.err.contains("inside"), qPrintable(r.err));
     }
 
     void dsmcRefusesWhatItCannotDoInTime() {
@@ -257,6 +312,212 @@ private slots:
         QVERIFY(QFileInfo::exists(unrelated)); // not a temporary file's name
         QVERIFY(readLines(hist).size() > 1);
         QCOMPARE(QDir(dir.path()).entryList(QDir::Files).size(), 3);
+    }
+
+    // A temporary file whose process is gone is removed by the next write to its file (or the check of an
+    // output before a run), however young: it used to stay until a run at least 10 s later.
+    void tempFilesOfADeadProcessAreRemovedWhateverTheirAge() {
+        QProcess gone;
+        gone.start("true");
+        QVERIFY(gone.waitForStarted());
+        const qint64 deadPid = gone.processId();
+        QVERIFY(gone.waitForFinished());
+        QTemporaryDir dir;
+        const QString hist = dir.filePath("h.csv"), series = dir.filePath("s.csv");
+        const QString dead = hist + QString(".tmp-%1-AbC123").arg(deadPid),
+                      deadSeries = series + QString(".tmp-%1-XyZ789").arg(deadPid),
+                      living = hist + QString(".tmp-%1-Qwe456").arg(::getpid());
+        for (const QString& f : {dead, deadSeries, living}) writeFile(f, "half");
+        const auto r =
+            runCli({"run", "gas-seed", "--steps", "1", "--histogram", hist, "--out", series, "--quiet"});
+        QCOMPARE(r.exitCode, 0);
+        QVERIFY(!QFileInfo::exists(dead));
+        QVERIFY(!QFileInfo::exists(deadSeries)); // the streamed series is checked before the run
+        QVERIFY(QFileInfo::exists(living));      // its writer may still be writing
+        QCOMPARE(QDir(dir.path()).entryList(QDir::Files).size(), 3);
+    }
+
+    // A signal while a large scene is set up used to end the process by the signal, saying nothing.
+    void aSignalDuringSetUpEndsWithASentence_data() {
+        QTest::addColumn<int>("signal");
+        QTest::addColumn<int>("exitCode");
+        QTest::addColumn<QString>("name");
+        QTest::newRow("SIGINT") << int(SIGINT) << 130 << "SIGINT";
+        QTest::newRow("SIGTERM") << int(SIGTERM) << 143 << "SIGTERM";
+    }
+    void aSignalDuringSetUpEndsWithASentence() {
+        QFETCH(int, signal);
+        QFETCH(int, exitCode);
+        QFETCH(QString, name);
+        QTemporaryDir dir;
+        const QString series = dir.filePath("s.csv");
+        QProcess p;
+        // Seconds of set-up: the free stream of 2.5 M molecules placed before the first step.
+        p.start(PARTICLELAB_CLI, {"run", "tunnel-cylinder", "--set", "fn=1.5e12", "--steps", "0", "--quiet",
+                                  "--threads", "1", "--out", series});
+        QVERIFY(p.waitForStarted());
+        QTest::qWait(300);
+        QElapsedTimer clock;
+        clock.start();
+        ::kill(static_cast<pid_t>(p.processId()), signal);
+        QVERIFY(p.waitForFinished(30000));
+        QCOMPARE(p.exitStatus(), QProcess::NormalExit);
+        QCOMPARE(p.exitCode(), exitCode);
+        const QString err = QString::fromUtf8(p.readAllStandardError());
+        QVERIFY2(err.endsWith("particlelab-cli: stopped by " + name +
+                              " while setting up the experiment; nothing was written\n"),
+                 qPrintable(err));
+        QVERIFY(clock.elapsed() < 1000); // at once, not after the set-up
+        QVERIFY(!QFileInfo::exists(series));
+        QCOMPARE(QDir(dir.path()).entryList(QDir::Files).size(), 0);
+    }
+
+    // A preset or snapshot path that is no regular file is refused at once: a FIFO used to block the run,
+    // /dev/zero to be read without bound.
+    void inputsThatAreNotRegularFilesAreRefusedAtOnce() {
+        QTemporaryDir dir;
+        const QString fifo = dir.filePath("fifo.json");
+        QVERIFY(::mkfifo(fifo.toUtf8().constData(), 0644) == 0);
+        QElapsedTimer clock;
+        clock.start();
+        for (const QString& path : {fifo, QString("/dev/zero"), dir.path()})
+            for (const char* command : {"run", "columns"}) {
+                const auto r = runCli({command, path}, 10000);
+                QVERIFY2(!r.timedOut && !r.crashed, qPrintable(path));
+                QCOMPARE(r.exitCode, 2);
+                QVERIFY2(r.err.startsWith("particlelab-cli: ") && r.err.contains("'" + path + "'") &&
+                             r.err.contains("only regular files are read"),
+                         qPrintable(r.err));
+                QCOMPARE(r.err.count('\n'), 1);
+            }
+        QVERIFY(clock.elapsed() < 10000);
+    }
+
+    // A file larger than a preset or snapshot may be is refused before it is read, naming the bound.
+    void hugeInputFilesAreRefusedBeforeTheyAreRead() {
+        QTemporaryDir dir;
+        const QString huge = dir.filePath("huge.json"), big = dir.filePath("big.json");
+        QFile hugeFile(huge), bigFile(big);
+        QVERIFY(hugeFile.open(QIODevice::WriteOnly) && hugeFile.resize(qint64(1) << 30)); // sparse: no disk
+        hugeFile.close();
+        QVERIFY(bigFile.open(QIODevice::WriteOnly));
+        bigFile.write(R"({"schema": 2, "model": "gas"})");
+        QVERIFY(bigFile.resize(qint64(20) << 20)); // a valid preset, then 20 MiB of NUL bytes
+        bigFile.close();
+        QElapsedTimer clock;
+        clock.start();
+        const auto r = runCli({"run", huge, "--steps", "1"}, 20000);
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains("'" + huge + "'") && r.err.contains("holds 1 GiB, more than the 256 MiB"),
+                 qPrintable(r.err));
+        QVERIFY2(clock.elapsed() < 3000, "the file was read"); // refused from its size
+        const auto preset = runCli({"run", big, "--steps", "1"}, 20000);
+        QCOMPARE(preset.exitCode, 2);
+        QVERIFY2(preset.err.contains("holds 20 MiB, more than the 16 MiB that a preset file may hold"),
+                 qPrintable(preset.err));
+    }
+
+    // JSON nested 200 000 deep used to overflow the stack (SIGSEGV) in the preset's migration or the
+    // snapshot's copy of its preset.
+    void deeplyNestedJsonIsRefusedNamingTheDepth_data() {
+        QTest::addColumn<QByteArray>("json");
+        const QByteArray deep = QByteArray(200000, '[') + QByteArray(200000, ']');
+        QTest::newRow("preset") << QByteArray(R"({"schema":2,"model":"gas","params":{"dt":)") + deep + "}}";
+        QTest::newRow("schema-1 preset")
+            << QByteArray(R"({"schema":1,"model":"fluid","params":{"gravity_y":)") + deep + "}}";
+        QTest::newRow("snapshot")
+            << QByteArray(R"({"snapshot_schema":1,"preset":{"schema":2,"model":"gas","name":)") + deep +
+                   R"(},"state":{"scalars":{},"arrays":{}}})";
+        QTest::newRow("unbalanced") << QByteArray(200000, '{');
+    }
+    void deeplyNestedJsonIsRefusedNamingTheDepth() {
+        QFETCH(QByteArray, json);
+        QTemporaryDir dir;
+        const QString path = dir.filePath("deep.json");
+        writeFile(path, json);
+        for (const char* command : {"run", "columns"}) {
+            const auto r = runCli({command, path}, 30000);
+            QVERIFY2(!r.crashed && !r.timedOut, qPrintable(r.err));
+            QCOMPARE(r.exitCode, 2);
+            QVERIFY2(r.err.contains(path) && r.err.contains("more than 64 levels deep (line 1)"),
+                     qPrintable(r.err));
+            QCOMPARE(r.err.count('\n'), 1);
+        }
+    }
+
+    // Two outputs on one file, or an output over what the command reads, used to lose data silently: the
+    // series replaced by the histogram, two streams interleaved, the input preset overwritten.
+    void outputsThatShareAFileAreRefusedBeforeTheRun_data() {
+        QTest::addColumn<QStringList>("args"); // DIR is the test's folder
+        QTest::addColumn<QString>("message");
+        const QStringList gas{"run", "gas-seed", "--steps", "3", "--quiet"};
+        const QStringList tunnel{"run", "tunnel-cylinder", "--steps", "3", "--quiet"};
+        QTest::newRow("out and histogram")
+            << gas + QStringList{"--out", "DIR/same.csv", "--histogram", "DIR/same.csv"}
+            << "--out and --histogram name 'DIR/same.csv': one output would replace the other";
+        QTest::newRow("out and surface")
+            << tunnel + QStringList{"--out", "DIR/s.csv", "--surface", "DIR/s.csv"} << "--out and --surface";
+        QTest::newRow("fields and snapshot, spelled apart")
+            << tunnel + QStringList{"--snapshot", "DIR/f.csv", "--fields", "DIR/./f.csv"}
+            << "--snapshot and --fields name 'DIR/f.csv' and 'DIR/./f.csv', which are one file";
+        QTest::newRow("through a link")
+            << gas + QStringList{"--histogram", "DIR/target.csv", "--out", "DIR/link.csv"}
+            << "--out and --histogram name 'DIR/link.csv' and 'DIR/target.csv', which are one file";
+        QTest::newRow("through a link to a new file")
+            << gas + QStringList{"--dump-initial", "DIR/newlink.csv", "--dump-final", "DIR/new.csv"}
+            << "--dump-initial and --dump-final";
+        QTest::newRow("through a linked folder")
+            << gas + QStringList{"--dump-final", "DIR/sub/d.csv", "--out", "DIR/sublink/d.csv"}
+            << "--out and --dump-final";
+        QTest::newRow("over the input preset")
+            << QStringList{"run", "DIR/mine.json", "--out", "DIR/mine.json"}
+            << "--out and the input name 'DIR/mine.json': the output would "
+               "replace what the run reads";
+        QTest::newRow("over the input snapshot")
+            << QStringList{"run", "DIR/snap.json", "--snapshot", "DIR/snap.json"}
+            << "--snapshot and the input";
+        QTest::newRow("sweep over its preset")
+            << QStringList{"sweep", "--from", "DIR/gas.json", "--out", "DIR/gas.json"} << "--out and --from";
+        QTest::newRow("import lammps")
+            << QStringList{"import", "lammps", "DIR", "--out", "DIR/i.csv", "--histogram", "DIR/i.csv"}
+            << "--out and --histogram";
+        QTest::newRow("import over the log")
+            << QStringList{"import", "sparta", "DIR", "--histogram", "DIR/log.sparta"}
+            << "--histogram and the run's log";
+    }
+    void outputsThatShareAFileAreRefusedBeforeTheRun() {
+        QFETCH(QStringList, args);
+        QFETCH(QString, message);
+        QTemporaryDir dir;
+        const auto withDir = [&](QString text) { return text.replace("DIR", dir.path()); };
+        for (QString& arg : args) arg = withDir(arg);
+        const QByteArray preset = R"({"schema": 2, "model": "gas", "name": "mine"})";
+        writeFile(dir.filePath("mine.json"), preset);
+        writeFile(dir.filePath("gas.json"), preset);
+        writeFile(dir.filePath("target.csv"), "old\n");
+        writeFile(dir.filePath("log.sparta"), "a log\n");
+        QVERIFY(QFile::link(dir.filePath("target.csv"), dir.filePath("link.csv")));
+        QVERIFY(QFile::link(dir.filePath("new.csv"), dir.filePath("newlink.csv")));
+        QVERIFY(QDir(dir.path()).mkdir("sub") && QFile::link(dir.filePath("sub"), dir.filePath("sublink")));
+        QCOMPARE(
+            runCli({"run", "gas-seed", "--steps", "2", "--quiet", "--snapshot", dir.filePath("snap.json")})
+                .exitCode,
+            0);
+        const auto contents = [&] {
+            QStringList all;
+            for (const QFileInfo& f : QDir(dir.path()).entryInfoList(QDir::Files | QDir::NoDotAndDotDot))
+                all << f.fileName() + ":" + QString::number(f.size()) + ":" +
+                           f.lastModified().toString(Qt::ISODateWithMs);
+            return all;
+        };
+        const QStringList before = contents();
+        const auto r = runCli(args, 30000);
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.startsWith("particlelab-cli: ") && r.err.contains(withDir(message)),
+                 qPrintable(r.err));
+        QCOMPARE(r.err.count('\n'), 1);
+        QCOMPARE(contents(), before); // nothing written, nothing replaced
+        QVERIFY(!QFileInfo::exists(dir.filePath("sub/d.csv")));
     }
 
     void memoryStaysFlatOverALongRun() {

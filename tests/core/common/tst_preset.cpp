@@ -2,11 +2,14 @@
 // and nothing is half-applied.
 #include "catalog/ModelCatalog.h"
 #include "common/AtomicFile.h"
+#include "common/InputLimits.h"
 #include "gas/GasModel.h"
 
 #include <QTemporaryDir>
 #include <QtTest>
 #include <filesystem>
+#include <sys/stat.h>
+#include <unistd.h>
 
 using namespace pl;
 
@@ -192,6 +195,101 @@ private slots:
             QVERIFY(std::string(e.what()).find("/nonexistent/dir/p.json") != std::string::npos);
         }
         QVERIFY_THROWS_EXCEPTION(FileError, writeFileAtomically("/nonexistent/dir/p.json", "{}"));
+    }
+
+    // Nesting beyond kMaxJsonDepth is refused before any parser, copy or printer recurses into it (a
+    // preset 200 000 deep used to overflow the stack in the migration's copy of its params).
+    void jsonNestedDeeperThanTheLimitIsRefused() {
+        const auto nested = [](int depth) { return std::string(depth, '[') + std::string(depth, ']'); };
+        for (const int schema : {1, 2}) {
+            const std::string deep = R"({"schema": )" + std::to_string(schema) +
+                                     R"(, "model": "gas", "params": {"dt": )" + nested(200000) + "}}";
+            const QString m = errorOf(deep);
+            QVERIFY2(m.startsWith("test.json: ") && m.contains("more than 64 levels deep (line 1)"),
+                     qPrintable(m));
+        }
+        // At the limit the depth is allowed (and the value refused for what it is); inside strings,
+        // brackets are text.
+        const QString atLimit = errorOf(gasPreset(R"("dt": )" + nested(kMaxJsonDepth - 2)));
+        QVERIFY2(!atLimit.isEmpty() && !atLimit.contains("levels deep"), qPrintable(atLimit));
+        QVERIFY(errorOf("{\"schema\": 2, \"model\": \"gas\", \"name\": \"" + std::string(1000, '[') + "\"}")
+                    .isEmpty());
+        const std::string deepSnapshot =
+            R"({"snapshot_schema": 1, "state": {"scalars": {}, "arrays": {}}, "preset": )" + nested(100000) +
+            "}";
+        QVERIFY(!isSnapshotJson(deepSnapshot));
+        try {
+            parseSnapshot(deepSnapshot, specsForModel, "deep.json");
+            QFAIL("a snapshot nested 100 000 deep was read");
+        } catch (const PresetError& e) {
+            QVERIFY2(std::string(e.what()).find("more than 64 levels deep") != std::string::npos, e.what());
+        }
+    }
+
+    // The CLI and the app open files through openExperiment: only regular files, of a bounded size, and
+    // at once (a FIFO does not block it).
+    void experimentFilesAreRegularAndBounded() {
+        QTemporaryDir dir;
+        const std::string fifo = dir.filePath("fifo.json").toStdString();
+        QVERIFY(::mkfifo(fifo.c_str(), 0644) == 0);
+        const auto refusal = [](const std::string& path) -> QString {
+            try {
+                openExperiment(path);
+            } catch (const PresetError& e) {
+                return QString::fromStdString(e.what());
+            }
+            return {};
+        };
+        QVERIFY2(refusal(fifo).contains("it is a FIFO, and only regular files are read"),
+                 qPrintable(refusal(fifo)));
+        QVERIFY(!isSnapshotFile(fifo));
+        QVERIFY(refusal("/dev/null").contains("it is a character device"));
+        QVERIFY(refusal(dir.path().toStdString()).contains("it is a directory"));
+        const std::string huge = dir.filePath("huge.json").toStdString();
+        {
+            std::FILE* f = std::fopen(huge.c_str(), "w");
+            QVERIFY(f);
+            std::fclose(f);
+        }
+        QVERIFY(::truncate(huge.c_str(), off_t(kMaxSnapshotFileBytes) + 1) == 0); // sparse
+        QVERIFY2(
+            refusal(huge).contains("holds 256.0 MiB, more than the 256 MiB that a preset or snapshot file "
+                                   "may hold"),
+            qPrintable(refusal(huge)));
+        QVERIFY_THROWS_EXCEPTION(PresetError, readSnapshotFile(huge, specsForModel));
+        QVERIFY(QString::fromStdString(byteSize(kMaxPresetFileBytes)) == "16 MiB");
+        QVERIFY(QString::fromStdString(byteSize(1536)) == "1.5 KiB");
+        // A built-in name and a preset file still open; a snapshot opens with its state.
+        QVERIFY(!openExperiment("gas-classroom").isSnapshot);
+        GasModel model;
+        model.reset(loadPreset("gas-classroom"));
+        model.step();
+        const std::string snapshot = dir.filePath("s.json").toStdString();
+        writeSnapshotFile(snapshot, model);
+        const OpenedExperiment opened = openExperiment(snapshot);
+        QVERIFY(opened.isSnapshot && !opened.snapshot.state.arrays.empty());
+    }
+
+    // Whether two output paths are one file: through links, for files not there yet by folder and name.
+    void sameFileSeesThroughLinks() {
+        QTemporaryDir dir;
+        const auto at = [&](const char* name) { return dir.filePath(name).toStdString(); };
+        {
+            std::FILE* f = std::fopen(at("a.csv").c_str(), "w");
+            QVERIFY(f);
+            std::fclose(f);
+        }
+        QVERIFY(::symlink(at("a.csv").c_str(), at("link.csv").c_str()) == 0);
+        QVERIFY(::link(at("a.csv").c_str(), at("hard.csv").c_str()) == 0);
+        QVERIFY(::mkdir(at("sub").c_str(), 0755) == 0 && ::symlink("sub", at("sublink").c_str()) == 0);
+        QVERIFY(sameFile(at("a.csv"), at("a.csv")));
+        QVERIFY(sameFile(at("a.csv"), at("link.csv")));
+        QVERIFY(sameFile(at("hard.csv"), at("link.csv")));
+        QVERIFY(sameFile(at("new.csv"), dir.path().toStdString() + "/./sub/../new.csv"));
+        QVERIFY(sameFile(at("sub/n.csv"), at("sublink/n.csv")));
+        QVERIFY(!sameFile(at("a.csv"), at("new.csv")));
+        QVERIFY(!sameFile(at("sub/n.csv"), at("n.csv")));
+        QVERIFY(sameFile("/nonexistent/x.csv", "/nonexistent/./x.csv"));
     }
 
     void nothingHalfApplied() {
