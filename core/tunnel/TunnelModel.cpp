@@ -51,6 +51,16 @@ void TunnelModel::refuseParams(const TunnelParams& next) const {
                                    formatNumber(0.25 * next.dt / nuDt, 3) + " s");
 }
 
+void TunnelModel::checkBuiltState() const {
+    // A preset (and the CLI's --set, which edits the preset) comes through reset, not setParams: the
+    // same bound, before any step runs.
+    try {
+        refuseParams(params_);
+    } catch (const ParamError& e) {
+        throw PresetError("params." + e.key(), withKeys(e.what()));
+    }
+}
+
 void TunnelModel::refreshCollisionModel() {
     collisions_ = collisionModelOf(params_);
 }

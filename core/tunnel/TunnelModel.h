@@ -135,6 +135,7 @@ protected:
 
     // Protected, not private: the GL backend (gl/TunnelModelGL) steps the same state on the GPU.
     void refuseParams(const TunnelParams& next) const override;
+    void checkBuiltState() const override;
     void paramsChanged(const TunnelParams& before) override;
     void checkObstacles(const TunnelParams& next, const std::vector<Obstacle>& obstacles) const override;
 

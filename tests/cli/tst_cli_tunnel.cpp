@@ -220,6 +220,28 @@ private slots:
         // Nothing ran and nothing was written: the folder is as empty as it was.
         QCOMPARE(QDir(dir.path()).entryList(QDir::NoDotAndDotDot | QDir::AllEntries), QStringList());
     }
+
+    // A preset or --set whose free stream collides more than a step can do is refused before the run,
+    // as the DSMC cell refuses it, naming dt and a value that works (before, a huge cross-section sat
+    // in its first step for minutes and a huge dt grew to gigabytes).
+    void stepsTheTunnelCannotDoAreRefusedBeforeTheRun_data() {
+        QTest::addColumn<QString>("set");
+        QTest::newRow("huge cross-section") << "vhs_d_ref=1e-6";
+        QTest::newRow("huge dt") << "dt=1000";
+    }
+    void stepsTheTunnelCannotDoAreRefusedBeforeTheRun() {
+        QFETCH(QString, set);
+        QTemporaryDir dir;
+        const QString series = dir.filePath("series.csv");
+        const auto r = runCli({"run", "tunnel-cylinder", "--set", set, "--steps", "2", "--every", "1",
+                               "--threads", "1", "--out", series},
+                              30000);
+        QVERIFY(!r.crashed && !r.timedOut);
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains("times per molecule and step") && r.err.contains("use dt ≤"),
+                 qPrintable(r.err));
+        QVERIFY(!QFile::exists(series));
+    }
 };
 
 QTEST_GUILESS_MAIN(TestCliTunnel)
