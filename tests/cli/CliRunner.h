@@ -3,6 +3,7 @@
 #pragma once
 
 #include <QProcess>
+#include <QProcessEnvironment>
 #include <QString>
 #include <QStringList>
 
@@ -16,10 +17,13 @@ struct CliResult {
     QString out, err;
 };
 
-inline CliResult runProgram(const QString& program, const QStringList& args, int timeoutMs = 120000,
-                            const QString& workingDir = {}) {
+inline CliResult
+runProgram(const QString& program, const QStringList& args, int timeoutMs = 120000,
+           const QString& workingDir = {},
+           const QProcessEnvironment& environment = QProcessEnvironment::systemEnvironment()) {
     QProcess p;
     if (!workingDir.isEmpty()) p.setWorkingDirectory(workingDir);
+    p.setProcessEnvironment(environment);
     p.start(program, args);
     CliResult r;
     if (!p.waitForStarted(timeoutMs)) {

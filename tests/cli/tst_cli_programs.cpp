@@ -15,30 +15,13 @@ namespace {
 // app's settings, recent files, presets and autosaves go to a folder of their own, not the user's.
 CliResult runWithEnvironment(const QString& program, const QStringList& args, const QStringList& unset,
                              const QStringList& set = {}) {
-    QProcess p;
     QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
     static const QTemporaryDir home;
     for (const char* name : {"XDG_CONFIG_HOME", "XDG_DATA_HOME", "XDG_STATE_HOME", "XDG_CACHE_HOME"})
         environment.insert(name, home.filePath(name));
     for (const QString& name : unset) environment.remove(name);
     for (const QString& entry : set) environment.insert(entry.section('=', 0, 0), entry.section('=', 1));
-    p.setProcessEnvironment(environment);
-    p.start(program, args);
-    CliResult r;
-    if (!p.waitForStarted(120000)) {
-        r.startError = p.errorString();
-        return r;
-    }
-    r.timedOut = !p.waitForFinished(120000);
-    if (r.timedOut) {
-        p.kill();
-        p.waitForFinished();
-    }
-    r.crashed = !r.timedOut && p.exitStatus() == QProcess::CrashExit;
-    r.exitCode = p.exitCode();
-    r.out = QString::fromUtf8(p.readAllStandardOutput());
-    r.err = QString::fromUtf8(p.readAllStandardError());
-    return r;
+    return pl::test::runProgram(program, args, 120000, {}, environment);
 }
 
 // Neither X, nor Wayland, nor a chosen Qt platform: a shell over ssh, a script, a package's build.
