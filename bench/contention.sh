@@ -4,7 +4,8 @@
 # beside a busy loop that holds one core, as another program would. Repeats are interleaved (1 thread,
 # default, 1 thread, …), so a change of load hits both alike. Each repeat times about SECONDS of steps
 # after the bench's warm-up; the step count per preset is calibrated once at 1 thread.
-# Usage: bench/contention.sh [REPEATS] [SECONDS] ["PRESET…"]   (CLI=path for another build)
+# Usage: bench/contention.sh [REPEATS] [SECONDS] ["PRESET…"]   (CLI=path for another build; FIXED=2
+# compares the default with 2 fixed threads instead of 1, LOADS=quiet runs only the quiet half)
 # Prints each repeat as it goes, then a Markdown table of median steps/s (BENCHMARKS.md, "Shared
 # machines").
 set -euo pipefail
@@ -13,6 +14,8 @@ cli=${CLI:-build/app/particlelab-cli}
 repeats=${1:-5}
 seconds=${2:-0.5}
 presets=${3:-$("$cli" list | cut -f1)}
+fixed=${FIXED:-1}
+loads=${LOADS:-quiet busy}
 log=$(mktemp)
 busy=""
 stop_busy() { [ -z "$busy" ] || kill "$busy" 2>/dev/null || true; busy=""; }
@@ -28,11 +31,11 @@ for preset in $presets; do
     n = int(want / (s / 20) + 0.5); if (n < 20) n = 20; if (n > 200000) n = 200000; print n }')
 done
 
-for load in quiet busy; do
+for load in $loads; do
   [ "$load" = busy ] && { sh -c 'while :; do :; done' & busy=$!; }
   for preset in $presets; do
     for r in $(seq 1 "$repeats"); do
-      for threads in 1 default; do
+      for threads in "$fixed" default; do
         option=()
         [ "$threads" = default ] || option=(--threads "$threads")
         line=$("$cli" bench "$preset" --steps "${steps[$preset]}" --repeats 1 "${option[@]}" 2>/dev/null)
@@ -51,11 +54,12 @@ rate_of() { awk -v l="$1" -v p="$2" -v t="$3" '$1 == l && $2 == p && $3 == t { p
 echo
 echo "Median steps/s over $repeats interleaved repeats of ~${seconds} s; 'busy': beside sh -c 'while :; do :; done'."
 echo
-echo "| preset | steps | quiet, 1 thread | quiet, default | default / 1 | busy, 1 thread | busy, default | default / 1 |"
+echo "| preset | steps | quiet, $fixed | quiet, default | default / $fixed | busy, $fixed | busy, default | default / $fixed |"
 echo "|---|---|---|---|---|---|---|---|"
 for preset in $presets; do
-  q1=$(rate_of quiet "$preset" 1) qd=$(rate_of quiet "$preset" default)
-  b1=$(rate_of busy "$preset" 1) bd=$(rate_of busy "$preset" default)
+  q1=$(rate_of quiet "$preset" "$fixed") qd=$(rate_of quiet "$preset" default)
+  b1=$(rate_of busy "$preset" "$fixed") bd=$(rate_of busy "$preset" default)
   awk -v p="$preset" -v n="${steps[$preset]}" -v q1="$q1" -v qd="$qd" -v b1="$b1" -v bd="$bd" 'BEGIN {
-    printf "| %s | %d | %.0f | %.0f | %.2f | %.0f | %.0f | %.2f |\n", p, n, q1, qd, qd / q1, b1, bd, bd / b1 }'
+    r = q1 > 0 ? qd / q1 : 0; s = b1 > 0 ? bd / b1 : 0
+    printf "| %s | %d | %.0f | %.0f | %.2f | %.0f | %.0f | %.2f |\n", p, n, q1, qd, r, b1, bd, s }'
 done
