@@ -57,7 +57,7 @@ for path in usr/bin/particlelab usr/bin/particlelab-cli usr/bin/particlelab-benc
   usr/share/metainfo/io.github.particlelab.particlelab.metainfo.xml \
   usr/share/icons/hicolor/scalable/apps/particlelab.svg usr/share/icons/hicolor/48x48/apps/particlelab.png \
   usr/share/man/man1/particlelab.1.gz usr/share/man/man1/particlelab-cli.1.gz \
-  usr/share/man/man1/particlelab-bench.1.gz usr/share/particlelab/presets/gas/gas-seed.json \
+  usr/share/man/man1/particlelab-bench.1.gz usr/share/particlelab/presets/gas/gas-write-up.json \
   usr/share/doc/particlelab/copyright usr/share/doc/particlelab/changelog.gz; do
   [ -f "$tree/$path" ] || fail "the package lacks /$path"
 done
@@ -141,7 +141,7 @@ in_root "apt-get update -q >/dev/null && cd /root && apt-get install -y -q ./$(b
 in_root "dpkg-query -W -f='\${Package}\n' | wc -l"
 
 part "clean root: the programs"
-in_root "cd /root && particlelab-cli run gas-seed --steps 200 --out s.csv --quiet && wc -l s.csv && head -n 2 s.csv"
+in_root "cd /root && particlelab-cli run gas-write-up --steps 200 --out s.csv --quiet && wc -l s.csv && head -n 2 s.csv"
 rows=$(($(wc -l <"$root/root/s.csv") - 1))
 [ "$rows" -gt 0 ] || fail "particlelab-cli wrote no rows"
 in_root "particlelab --version && particlelab-cli --version && particlelab-bench --version"
@@ -149,10 +149,10 @@ in_root "particlelab --version && particlelab-cli --version && particlelab-bench
 in_root "particlelab --help | head -n 3"
 # No display: one sentence and exit status 2, not an abort.
 status=0
-in_root "particlelab gas-seed" || status=$?
+in_root "particlelab gas-write-up" || status=$?
 [ "$status" -eq 2 ] || fail "particlelab without a display exited with $status, not 2"
 # A snapshot (.plsnap) written and continued; an experiment file (.particlelab) run.
-in_root "cd /root && particlelab-cli run gas-seed --steps 20 --snapshot s.plsnap --quiet &&
+in_root "cd /root && particlelab-cli run gas-write-up --steps 20 --snapshot s.plsnap --quiet &&
   particlelab-cli run s.plsnap --steps 20 --out continued.csv --quiet && wc -l continued.csv &&
   cp /usr/share/particlelab/presets/gas/gas-classroom.json classroom.particlelab &&
   particlelab-cli run classroom.particlelab --steps 20 --out classroom.csv --quiet && wc -l classroom.csv"

@@ -73,7 +73,7 @@ private slots:
 
     // A window without a display: one sentence on stderr and exit status 2, not Qt's abort.
     void appWithoutDisplaySaysSo() {
-        for (const QStringList& args : {QStringList{}, QStringList{"gas-seed", "--present"}}) {
+        for (const QStringList& args : {QStringList{}, QStringList{"gas-write-up", "--present"}}) {
             const CliResult r = runWithEnvironment(PARTICLELAB_GUI, args, kDisplayVariables);
             QVERIFY(!r.crashed && !r.timedOut);
             QCOMPARE(r.exitCode, 2);
