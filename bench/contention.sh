@@ -60,6 +60,8 @@ for preset in $presets; do
   q1=$(rate_of quiet "$preset" "$fixed") qd=$(rate_of quiet "$preset" default)
   b1=$(rate_of busy "$preset" "$fixed") bd=$(rate_of busy "$preset" default)
   awk -v p="$preset" -v n="${steps[$preset]}" -v q1="$q1" -v qd="$qd" -v b1="$b1" -v bd="$bd" 'BEGIN {
-    r = q1 > 0 ? qd / q1 : 0; s = b1 > 0 ? bd / b1 : 0
-    printf "| %s | %d | %.0f | %.0f | %.2f | %.0f | %.0f | %.2f |\n", p, n, q1, qd, r, b1, bd, s }'
+    # A load that was not run (LOADS) shows as a dash.
+    q = q1 > 0 ? sprintf("%.0f | %.0f | %.2f", q1, qd, qd / q1) : "— | — | —"
+    b = b1 > 0 ? sprintf("%.0f | %.0f | %.2f", b1, bd, bd / b1) : "— | — | —"
+    printf "| %s | %d | %s | %s |\n", p, n, q, b }'
 done
