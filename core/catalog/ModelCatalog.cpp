@@ -163,12 +163,7 @@ std::string experimentFile(const std::string& nameOrPath) {
 OpenedExperiment openExperiment(const std::string& nameOrPath) {
     const std::string path = experimentFile(nameOrPath);
     if (path.empty()) return {{loadPreset(nameOrPath), {}}, false}; // a built-in one, or why there is none
-    std::string text;
-    try {
-        text = readWholeFile(path, kMaxSnapshotFileBytes, "a preset or snapshot file");
-    } catch (const FileError& e) {
-        throw PresetError("", e.what());
-    }
+    const std::string text = readExperimentText(path, kMaxSnapshotFileBytes, "a preset or snapshot file");
     if (isSnapshotJson(text)) return {parseSnapshot(text, specsForModel, path), true};
     if (text.size() > kMaxPresetFileBytes)
         throw PresetError("", "will not read '" + path + "': it holds " + byteSize(text.size()) +

@@ -1,6 +1,7 @@
 // The JSON depth check and the sizes in the messages of the input bounds.
 #include "InputLimits.h"
 
+#include "AtomicFile.h"
 #include "Preset.h"
 
 #include <cstdio>
@@ -48,6 +49,14 @@ void checkJsonDepth(std::string_view text, const std::string& source) {
         } else if ((c == ']' || c == '}') && depth > 0) {
             --depth; // unbalanced brackets are the parser's to report
         }
+    }
+}
+
+std::string readExperimentText(const std::string& path, std::size_t maxBytes, const std::string& what) {
+    try {
+        return readWholeFile(path, maxBytes, what);
+    } catch (const FileError& e) {
+        throw PresetError("", e.what());
     }
 }
 

@@ -17,6 +17,11 @@ constexpr std::size_t kMaxSnapshotFileBytes = std::size_t{256} << 20; // 256 MiB
 // The deepest nesting of arrays and objects in a preset or snapshot: theirs is 4 at most.
 constexpr int kMaxJsonDepth = 64;
 
+// The text of an experiment file (preset or snapshot) of at most maxBytes, read by readWholeFile; its
+// refusals (not a regular file, too large, unreadable) come as PresetError (key ""), as a file's other
+// errors do. what names the file in the message ("a preset file").
+std::string readExperimentText(const std::string& path, std::size_t maxBytes, const std::string& what);
+
 // A size in bytes as people read it: "512 bytes", "16 MiB", "1.0 GiB".
 std::string byteSize(std::size_t bytes);
 

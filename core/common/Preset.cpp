@@ -281,12 +281,7 @@ std::string serializePreset(const Preset& preset, const std::vector<ParamSpec>& 
 }
 
 Preset readPresetFile(const std::string& path, const SpecLookup& specsFor) {
-    std::string text;
-    try {
-        text = readWholeFile(path, kMaxPresetFileBytes, "a preset file");
-    } catch (const FileError& e) {
-        throw PresetError("", e.what());
-    }
+    const std::string text = readExperimentText(path, kMaxPresetFileBytes, "a preset file");
     return parsePreset(text, specsFor, path);
 }
 

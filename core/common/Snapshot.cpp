@@ -92,12 +92,7 @@ void writeSnapshotFile(const std::string& path, const Model& model) {
 }
 
 Snapshot readSnapshotFile(const std::string& path, const SpecLookup& specsFor) {
-    std::string text;
-    try {
-        text = readWholeFile(path, kMaxSnapshotFileBytes, "a snapshot");
-    } catch (const FileError& e) {
-        throw PresetError("", e.what());
-    }
+    const std::string text = readExperimentText(path, kMaxSnapshotFileBytes, "a snapshot");
     return parseSnapshot(text, specsFor, path);
 }
 
