@@ -256,8 +256,14 @@ int runSimulation(const RunOptions& options) {
     long long sampled = 0;
     try {
         writeText(options.dumpInitial, [&] { return particlesCsv(*model); });
+        // A resumed snapshot runs what is left of the preset's run, so it ends where the run would have.
         const long long planned = model->plannedSteps();
-        const long long steps = options.steps.value_or(planned > 0 ? planned : kDefaultSteps);
+        const long long left = std::max(0LL, planned - static_cast<long long>(model->stepCount()));
+        if (planned > 0 && left == 0 && !options.steps)
+            std::cerr << "particlelab-cli: the snapshot is at step " << model->stepCount()
+                      << " and the preset's run is " << planned
+                      << " steps long, so nothing is left to run (--steps N runs on)\n";
+        const long long steps = options.steps.value_or(planned > 0 ? left : kDefaultSteps);
         const long long every = options.every.value_or(planned > 0 ? 1 : kDefaultEvery);
         SeriesCsv series(options.out, model->seriesColumns());
         SurfaceCsv surface(options.surface, model->seriesColumns());

@@ -27,6 +27,13 @@ struct StateRecord {
     // The scalar named key; throws PresetError ("state.key") when it is missing or not finite (a null in
     // the file reads as NaN: no state of a running model holds one).
     double scalar(const std::string& key) const;
+    // A scalar that later builds added: `absent` when an older snapshot lacks it; when present, it must
+    // be finite as scalar() requires.
+    double scalarOr(const std::string& key, double absent) const { return has(key) ? scalar(key) : absent; }
+    // A scalar that counts (steps, events): a whole number from 0 to 2⁵³, beyond which a double no longer
+    // counts one by one; throws PresetError naming the key otherwise.
+    std::int64_t count(const std::string& key) const;
+    bool has(const std::string& key) const { return scalars.count(key) != 0 || arrays.count(key) != 0; }
     // The array named key as T, with `size` entries (any size when size is SIZE_MAX); throws PresetError
     // when it is missing, has another length, or holds a value that is not finite or that T cannot
     // represent exactly.

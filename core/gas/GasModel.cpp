@@ -31,6 +31,7 @@ void GasModel::reset() {
     integrator_ = params_.integrator;
     restartClock();
     lastSampleTime_ = 0.0;
+    lastCollisionRate_ = 0.0;
     lastSortStep_ = -1;
     spawnEvents_ = 0;
     pistonVelocity_ = 0.0;

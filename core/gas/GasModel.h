@@ -212,6 +212,7 @@ private:
     double energyBaseline_ = 0.0;  // E₀ of energyDrift
     double referenceEnergy_ = 0.0; // blow-up reference
     double lastSampleTime_ = 0.0;
+    double lastCollisionRate_ = 0.0; // the previous row's, repeated by a row taken with no time between
     struct WallSample {
         double impulse, duration, perimeterTime;
     };

@@ -124,8 +124,11 @@ GasObservables GasModel::summarise(const GasSums& sums) {
     for (const auto& w : wallWindow_) windowImpulse += w.impulse, windowPerimeterTime += w.perimeterTime;
     o.pressureWall = windowPerimeterTime != 0.0 ? windowImpulse / windowPerimeterTime : kNaN;
 
-    o.collisionRate =
-        elapsed != 0.0 ? 0.5 * static_cast<double>(sums.contactsBegun) / std::abs(elapsed) : 0.0;
+    // A row taken with no time since the previous one (the first row of a resumed snapshot) describes the
+    // interval that row did.
+    if (elapsed != 0.0)
+        lastCollisionRate_ = 0.5 * static_cast<double>(sums.contactsBegun) / std::abs(elapsed);
+    o.collisionRate = lastCollisionRate_;
     lastSampleTime_ = time();
     o.ksDistance = {kNaN, kNaN};
     o.energyDrift =

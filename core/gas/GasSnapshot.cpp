@@ -47,6 +47,7 @@ StateRecord GasModel::saveState() const {
     for (const WallSample& w : wallWindow_)
         window.insert(window.end(), {w.impulse, w.duration, w.perimeterTime});
     r.put("wall_window", window);
+    r.put("last_collision_rate", lastCollisionRate_);
     const NeighbourList::Contents list = neighbours_.contents();
     r.put("neighbours_valid", list.valid ? 1.0 : 0.0);
     r.put("neighbours_skin", list.skin);
@@ -85,6 +86,10 @@ void GasModel::restoreState(const StateRecord& r) {
                               "the snapshot's neighbour list names a missing disk");
     const std::vector<double> window = r.array<double>("wall_window");
     if (window.size() % 3 != 0) throw PresetError("state.wall_window", "state.wall_window must hold triples");
+    // Absent from snapshots of earlier builds: their first resumed row showed no collisions.
+    const double collisionRate = r.scalarOr("last_collision_rate", 0.0);
+    if (collisionRate < 0)
+        throw PresetError("state.last_collision_rate", "state.last_collision_rate must not be negative");
 
     restoreClock(r);
     stateTable().restore(*this, r);
@@ -93,6 +98,7 @@ void GasModel::restoreState(const StateRecord& r) {
     wallWindow_.clear();
     for (std::size_t k = 0; k < window.size(); k += 3)
         wallWindow_.push_back({window[k], window[k + 1], window[k + 2]});
+    lastCollisionRate_ = collisionRate;
     escaped_ = false;
     obstacleDrive_.clear();
     pistonDrive_.stop();

@@ -99,6 +99,7 @@ void GasModel::placeParticles(const std::vector<GasParticle>& particles) {
     restartClock();
     lastSortStep_ = -1;
     lastSampleTime_ = 0.0;
+    lastCollisionRate_ = 0.0;
     escaped_ = false;
     wallWindow_.clear();
     referenceEnergy_ = 0.0;

@@ -133,11 +133,12 @@ std::vector<BodyForce> TunnelSampler::lastForces() const {
 }
 
 std::vector<BodyForce> TunnelSampler::takeIntervalForces() {
-    std::vector<BodyForce> forces = meanForces(intervalForceX_, intervalForceY_, intervalSteps_);
+    if (intervalSteps_ == 0) return previousInterval_;
+    previousInterval_ = meanForces(intervalForceX_, intervalForceY_, intervalSteps_);
     std::fill(intervalForceX_.begin(), intervalForceX_.end(), 0.0);
     std::fill(intervalForceY_.begin(), intervalForceY_.end(), 0.0);
     intervalSteps_ = 0;
-    return forces;
+    return previousInterval_;
 }
 
 std::vector<FieldChoice> TunnelSampler::fieldChoices() const {

@@ -6,6 +6,7 @@
 
 #include "TunnelState.h"
 #include "common/SampledFields.h"
+#include "common/StateRecord.h"
 
 #include <array>
 #include <cstdint>
@@ -68,9 +69,21 @@ public:
     std::vector<BodyForce> averageForces() const;
     std::vector<BodyForce> lastForces() const;
     // The force on each body averaged over the steps since the previous call (the series' interval);
-    // the interval sums restart. Counts every endStep(), inside or outside the fields window; zero forces
-    // when no step ended since the previous call.
+    // the interval sums restart. Counts every endStep(), inside or outside the fields window. With no step
+    // since the previous call (a row of the same state, as the first row of a resumed run) it repeats
+    // that call's forces; zero forces before any.
     std::vector<BodyForce> takeIntervalForces();
+
+    // The window's sums, the surface sums and the series' interval as a snapshot keeps them, so that a
+    // resumed run's fields, forces and rows continue as those of the run that never stopped
+    // (TunnelSamplerState.cpp).
+    void save(StateRecord& record) const;
+    // Reads what save() wrote, on this sampler's grid (the per-body sums have one entry per body of the
+    // last step). Throws PresetError naming the field that does not fit, and then leaves the sampler as it
+    // was.
+    void restore(const StateRecord& record);
+    // Whether the record holds a sampler's state (snapshots of earlier builds do not).
+    static bool savedIn(const StateRecord& record);
 
     // SampledFields' pieces (TunnelModel forwards them). Field names: "n", "ux", "uy", "speed", "T",
     // "Tx", "Ty", "mach". A cell without samples, or with no open area, gives NaN for every field.
@@ -93,6 +106,7 @@ private:
     std::int64_t forceSteps_ = 0;
     std::vector<double> intervalForceX_, intervalForceY_;
     std::int64_t intervalSteps_ = 0;
+    std::vector<BodyForce> previousInterval_; // what the last takeIntervalForces() gave
 };
 
 } // namespace pl

@@ -1,7 +1,8 @@
 // The tunnel's dynamic state for snapshots: every molecule, the clock, the NTC remainders and running
 // (σ c_r)_max of each cell, the inflow remainders, the piston and the spawn counter. The random streams
 // are keyed by step, particle and cell, so the restored run draws the same numbers and continues bit
-// for bit. The fields window restarts (its sums are a view of the run, not part of its state).
+// for bit. The sampler's window, surface sums and series interval travel too (TunnelSamplerState.cpp),
+// so a resumed run's fields, forces and first row are those of the run that never stopped.
 #include "TunnelModel.h"
 
 #include <algorithm>
@@ -37,6 +38,8 @@ StateRecord TunnelModel::saveState() const {
     saveClock(r);
     stateTable().save(*this, state_, r);
     r.put("piston_direction", static_cast<double>(pistonDrive_.direction()));
+    r.put("sample_from", static_cast<double>(sampleFrom_));
+    sampler_.save(r);
     return r;
 }
 
@@ -47,19 +50,28 @@ void TunnelModel::restoreState(const StateRecord& r) {
         if (!(s.x[i] >= 0 && s.x[i] <= params_.boxWidth && s.y[i] >= 0 && s.y[i] <= params_.boxHeight))
             throw PresetError("state.x", "molecule " + std::to_string(i) + " lies outside the tunnel");
     const int direction = static_cast<int>(r.scalar("piston_direction"));
+    // Snapshots of earlier builds hold no sampler: their window starts again, as it did then.
+    const bool sampled = TunnelSampler::savedIn(r);
+    TunnelSampler sampler = sampler_;
+    std::int64_t sampleFrom = 0;
+    if (sampled) {
+        sampler.restore(r);
+        sampleFrom = r.count("sample_from");
+    }
     restoreClock(r);
     stateTable().restore(*this, r);
     s.cell.resize(n);
     state_ = std::move(s);
     for (std::size_t i = 0; i < n; ++i) state_.cell[i] = cellOf(state_.x[i], state_.y[i]);
     pistonDrive_.drive(direction);
+    if (sampled) sampler_ = std::move(sampler), sampleFrom_ = sampleFrom;
     restBodies();
     refreshOpenFraction();
     // The molecules keep their saved order, so the next steps index them as the saved run did.
     sortIntoCells();
     sigmaCrMax_ =
         cellSigmaCrMax_.empty() ? 0.0 : *std::max_element(cellSigmaCrMax_.begin(), cellSigmaCrMax_.end());
-    restartSampling();
+    if (!sampled) restartSampling();
     stateEdited();
 }
 

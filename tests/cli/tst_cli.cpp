@@ -131,6 +131,26 @@ private slots:
         QCOMPARE(bins.filter(QRegularExpression("^vx,")).size(), 50);
     }
 
+    // A snapshot of a preset with a run length resumes for what is left of it (before: another full
+    // run, to step 560 of 500); at the end, it runs nothing and says so.
+    void aResumedSnapshotRunsWhatIsLeftOfThePlannedRun() {
+        QTemporaryDir dir;
+        const QString at60 = dir.filePath("at60.plsnap"), at500 = dir.filePath("at500.plsnap"),
+                      series = dir.filePath("s.csv");
+        auto r = cli({"run", "dsmc-write-up", "--steps", "60", "--snapshot", at60, "--quiet"});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        r = cli({"run", at60, "--out", series, "--snapshot", at500, "--quiet"});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        const QStringList rows = readLines(series);
+        QCOMPARE(rows.size(), 1 + 441); // steps 60 … 500, every one sampled
+        QVERIFY(rows.value(1).startsWith("60,"));
+        QVERIFY(rows.last().startsWith("500,"));
+        r = cli({"run", at500, "--out", series, "--quiet"});
+        QCOMPARE(r.exitCode, 0);
+        QVERIFY2(r.err.contains("nothing is left to run"), qPrintable(r.err));
+        QCOMPARE(readLines(series).size(), 1 + 1);
+    }
+
     void damBreakRunsItsPlannedLengthWithTheFrontColumns() {
         QTemporaryDir dir;
         const QString series = dir.filePath("s.csv"), particles = dir.filePath("p.csv");

@@ -242,6 +242,40 @@ private slots:
                  qPrintable(r.err));
         QVERIFY(!QFile::exists(series));
     }
+
+    // A run resumed from a snapshot taken with the fields window open writes the fields, the forces and
+    // the rows of the run that never stopped (before: every cell NaN, drag_avg and sampled_steps from 0,
+    // no drag in the first row).
+    void resumedRunKeepsItsFieldsAndRows_data() {
+        QTest::addColumn<QString>("preset");
+        QTest::newRow("cylinder") << "tunnel-cylinder";
+        QTest::newRow("shock tube") << "tunnel-shock-tube";
+    }
+    void resumedRunKeepsItsFieldsAndRows() {
+        QFETCH(QString, preset);
+        QTemporaryDir dir;
+        const QString snapshot = dir.filePath("at20.plsnap");
+        const QStringList common{"--every", "5", "--set", "sample_start=5", "--threads", "1", "--quiet"};
+        const auto first =
+            runCli(QStringList{"run", preset, "--steps", "20", "--snapshot", snapshot} + common);
+        QCOMPARE(first.exitCode, 0);
+        const auto resumed =
+            runCli(QStringList{"run", snapshot, "--steps", "10", "--out", dir.filePath("b.csv"), "--fields",
+                               dir.filePath("b-fields.csv")} +
+                   common.mid(0, 2) + common.mid(4));
+        QCOMPARE(resumed.exitCode, 0);
+        const auto whole = runCli(QStringList{"run", preset, "--steps", "30", "--out", dir.filePath("c.csv"),
+                                              "--fields", dir.filePath("c-fields.csv")} +
+                                  common);
+        QCOMPARE(whole.exitCode, 0);
+        const QStringList fields = readLines(dir.filePath("b-fields.csv"));
+        QVERIFY(fields.size() > 100);
+        QVERIFY2(fields == readLines(dir.filePath("c-fields.csv")), "the resumed run's fields differ");
+        const QStringList rows = readLines(dir.filePath("b.csv")),
+                          wholeRows = readLines(dir.filePath("c.csv"));
+        QCOMPARE(rows.size(), 1 + 3);                                      // the header and steps 20, 25, 30
+        QCOMPARE(rows, QStringList{wholeRows.front()} + wholeRows.mid(5)); // steps 0, 5, 10, 15 before
+    }
 };
 
 QTEST_GUILESS_MAIN(TestCliTunnel)

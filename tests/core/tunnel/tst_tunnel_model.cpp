@@ -1,8 +1,9 @@
 // The wind tunnel's CPU model: what collisions and walls must conserve, the periodic wrap, the
 // inflow's flux and its flux-weighted velocity distribution against the exact half-range theory,
-// determinism at 1 and 2 threads and across a snapshot, dragged bodies at bounded speed, and refused
-// parameters naming their key.
+// determinism at 1 and 2 threads and across a snapshot (the sampling window included), dragged bodies at
+// bounded speed, and refused parameters naming their key.
 #include "catalog/ModelCatalog.h"
+#include "common/Snapshot.h"
 #include "tunnel/TunnelKernels.h"
 #include "tunnel/TunnelModel.h"
 
@@ -11,6 +12,7 @@
 #include <cmath>
 #include <numbers>
 #include <omp.h>
+#include <sstream>
 
 using namespace pl;
 
@@ -75,6 +77,31 @@ Moments inflowMoments(double s) {
         m0 += f, m1 += f * x, m2 += f * x * x;
     }
     return {m1 / m0, m2 / m0};
+}
+
+std::string fieldsCsv(const TunnelModel& model) {
+    std::ostringstream out;
+    model.sampler().writeFieldsCsv(out);
+    return out.str();
+}
+
+// The series row as text, so a difference names its column and every bit counts (NaN equals NaN).
+QString rowText(Model& model) {
+    const std::vector<double> row = model.sampleSeries();
+    const std::vector<std::string> columns = model.seriesColumns();
+    QStringList cells;
+    for (std::size_t k = 0; k < row.size(); ++k)
+        cells << QString::fromStdString(columns[k]) + "=" + QString::number(row[k], 'g', 17);
+    return cells.join(", ");
+}
+
+// The model as a snapshot file would bring it back: saved as text, parsed, and restored into a new model.
+std::unique_ptr<Model> throughSnapshotFile(const Model& model) {
+    const std::string text = serializeSnapshot(takeSnapshot(model), model.paramSpecs());
+    const Snapshot snapshot = parseSnapshot(text, specsForModel, "resume");
+    std::unique_ptr<Model> resumed = instantiate(snapshot.preset);
+    resumed->restoreState(snapshot.state);
+    return resumed;
 }
 
 } // namespace
@@ -308,6 +335,73 @@ private slots:
         QCOMPARE(resumed.stepCount(), std::int64_t(20));
         for (int k = 0; k < 20; ++k) resumed.step();
         requireSameState(original, resumed);
+    }
+
+    // Resumed with the fields window open, every built-in scene goes on as the run that never stopped:
+    // the first row (a repeat of the state the snapshot was taken in), the fields, drag_avg and the
+    // rows after it. Before, the window's sums were dropped: NaN fields, drag_avg from 0, no drag in
+    // the first row.
+    void snapshotKeepsTheSamplingWindow_data() {
+        QTest::addColumn<QString>("name");
+        for (const BuiltinPreset* preset : builtinPresetsOf("tunnel"))
+            QTest::newRow(preset->name.c_str()) << QString::fromStdString(preset->name);
+    }
+    void snapshotKeepsTheSamplingWindow() {
+        QFETCH(QString, name);
+        Preset preset;
+        for (const BuiltinPreset* builtin : builtinPresetsOf("tunnel"))
+            if (builtin->name == name.toStdString()) preset = builtin->preset;
+        preset.params["sample_start"] = 4.0;
+        const std::unique_ptr<Model> original = instantiate(preset);
+        for (int k = 0; k < 10; ++k) original->step();
+        const QString rowAtSave = rowText(*original);
+        const std::unique_ptr<Model> resumed = throughSnapshotFile(*original);
+        auto& a = dynamic_cast<TunnelModel&>(*original);
+        auto& b = dynamic_cast<TunnelModel&>(*resumed);
+        QCOMPARE(b.sampledSteps(), std::int64_t(6));
+        QCOMPARE(rowText(b), rowAtSave);
+        QVERIFY(fieldsCsv(b) == fieldsCsv(a));
+        for (int k = 0; k < 6; ++k) a.step(), b.step();
+        QCOMPARE(rowText(b), rowText(a));
+        QVERIFY(fieldsCsv(b) == fieldsCsv(a));
+        QCOMPARE(b.sampledSteps(), std::int64_t(12));
+    }
+
+    // The sampler's part of a snapshot is checked like the rest: a field that does not fit is refused
+    // naming it, and the model is left as it was.
+    void badSamplingStateIsRefusedNamingTheField_data() {
+        QTest::addColumn<QString>("key");
+        QTest::addColumn<double>("value");
+        QTest::newRow("negative steps") << "sampling_steps" << -1.0;
+        QTest::newRow("fractional steps") << "force_interval_steps" << 2.5;
+        QTest::newRow("window start") << "sample_from" << -3.0;
+        QTest::newRow("lift without its drag") << "force_window_lift" << 1.0;
+        QTest::newRow("negative count") << "sampling_count" << -1.0;
+    }
+    void badSamplingStateIsRefusedNamingTheField() {
+        QFETCH(QString, key);
+        QFETCH(double, value);
+        TunnelModel model;
+        model.reset(tunnelPreset({{"sample_start", 2.0}}, {disc(0.015, 0.015, 0.004)}));
+        for (int k = 0; k < 5; ++k) model.step();
+        StateRecord bad = model.saveState();
+        const std::string k = key.toStdString();
+        if (bad.scalars.count(k))
+            bad.scalars[k] = value;
+        else if (k == "force_window_lift")
+            bad.arrays[k].push_back(value); // one more entry than the drag has
+        else
+            bad.arrays[k].front() = value;
+        const std::string before = fieldsCsv(model);
+        const std::int64_t steps = model.sampledSteps();
+        try {
+            model.restoreState(bad);
+            QFAIL("a bad sampler state was accepted");
+        } catch (const PresetError& e) {
+            QCOMPARE(e.key(), "state." + k);
+        }
+        QCOMPARE(model.sampledSteps(), steps);
+        QVERIFY(fieldsCsv(model) == before);
     }
 
     // A body dragged across the tunnel moves at most tool_speed Δt per step, and no molecule is left

@@ -262,7 +262,8 @@ private slots:
         compareForces(sampler.lastForces(), force(-2.0));
         compareForces(sampler.averageForces(), mean(force(3.0), force(-2.0)));
         compareForces(sampler.takeIntervalForces(), force(-2.0));
-        compareForces(sampler.takeIntervalForces(), zero); // nothing since the previous call
+        // No step since the previous call: the same state, so the same interval as that call.
+        compareForces(sampler.takeIntervalForces(), force(-2.0));
 
         // restart() empties the window, not the interval or the last step; until addState() the window
         // stays closed.
