@@ -44,7 +44,9 @@ int main(int argc, char** argv) {
     RunOptions run;
     auto* runCmd = app.add_subcommand("run", "Run a preset and write observables as CSV");
     runCmd->add_option("preset", run.preset, "Built-in preset name or preset file")->required();
-    runCmd->add_option("--steps", run.steps, "Number of steps (default: what is left of the preset's run length, else 1000)")
+    runCmd
+        ->add_option("--steps", run.steps,
+                     "Number of steps (default: what is left of the preset's run length, else 1000)")
         ->transform(wholeNumber(0, kMaxSteps, "10⁹ steps are days of computing even for a small scene"));
     runCmd->add_option("--set", run.sets,
                        "Override a parameter: key=value (repeatable), in the scene's units");
