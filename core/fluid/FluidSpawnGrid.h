@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 #include <vector>
 
 namespace pl::fluid {
@@ -47,17 +48,34 @@ inline bool outsideFluidDomain(const Box& box, const std::vector<Obstacle>& obst
     return std::hypot(cx - x, cy - y) > 1e-9 * spacing;
 }
 
-// Particles a reset spawns into the initial fill: the grid points inside the domain, up to the cap.
+// The grid's indices whose coordinate start + spacing·k lies in [low, high] (a point on the edge counts),
+// as [first, last); empty when none does.
+inline std::pair<long long, long long> indicesWithin(double start, double spacing, long long count,
+                                                     double low, double high) {
+    const double slack = 1e-9 * spacing;
+    const double first = std::ceil((low - slack - start) / spacing),
+                 last = std::floor((high + slack - start) / spacing);
+    const auto clamp = [count](double k) {
+        return static_cast<long long>(std::clamp(k, 0.0, double(count)));
+    };
+    return {clamp(first), clamp(last + 1.0)};
+}
+
+// Particles a reset spawns into the initial fill: the grid points inside the domain, up to the cap. Only
+// the points inside the box are walked, and the walk ends at the cap, so a fill far larger than the box
+// is counted at once (the count picks the backend before the parameters are checked).
 inline long long initialFillCount(const FluidParams& p, const std::vector<Obstacle>& obstacles) {
     if (!p.hasFill()) return 0;
     const SpawnGrid g = SpawnGrid::centred(p.fillX0, p.fillY0, p.fillX1, p.fillY1, p.spacing());
     const Box box = confinementBox(p);
-    long long inside = 0;
-    for (long long r = 0; r < g.rows; ++r)
-        for (long long c = 0; c < g.columns; ++c)
-            if (!outsideFluidDomain(box, obstacles, p.particleRadius, g.spacing, g.x(c), g.y(r))) ++inside;
     const long long cap = p.drain ? 2 * p.maxParticles : p.maxParticles;
-    return std::min(inside, cap);
+    const auto [c0, c1] = indicesWithin(g.startX, g.spacing, g.columns, box.left, box.right);
+    const auto [r0, r1] = indicesWithin(g.startY, g.spacing, g.rows, box.bottom, box.top);
+    long long inside = 0;
+    for (long long r = r0; r < r1 && inside < cap; ++r)
+        for (long long c = c0; c < c1 && inside < cap; ++c)
+            if (!outsideFluidDomain(box, obstacles, p.particleRadius, g.spacing, g.x(c), g.y(r))) ++inside;
+    return inside;
 }
 
 } // namespace pl::fluid

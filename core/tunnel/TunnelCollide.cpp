@@ -26,8 +26,11 @@ std::vector<double> TunnelModel::openFractions(const TunnelParams& p,
     const auto nx = static_cast<std::size_t>(p.cellsX), ny = static_cast<std::size_t>(p.cellsY);
     std::vector<double> open(nx * ny, 1.0);
     const double dx = p.cellWidth(), dy = p.cellHeight();
-    for (const Obstacle& o : obstacles) {
-        // Only the cells under the body's bounding box.
+    // Each cell under a body's bounding box, with the bodies whose boxes reach it: a cell's samples are
+    // tested against those alone, so many bodies cost their cells, not bodies² × cells.
+    std::vector<std::pair<std::size_t, std::uint32_t>> reach; // (cell, body), sorted by cell then body
+    for (std::size_t k = 0; k < obstacles.size(); ++k) {
+        const Obstacle& o = obstacles[k];
         const double hx = o.shape == Obstacle::Shape::Disc ? o.radius : o.halfWidth;
         const double hy = o.shape == Obstacle::Shape::Disc ? o.radius : o.halfHeight;
         const auto lo = [](double a, double d, std::size_t n) {
@@ -36,18 +39,27 @@ std::vector<double> TunnelModel::openFractions(const TunnelParams& p,
         const std::size_t i0 = lo(o.x - hx, dx, nx), i1 = lo(o.x + hx, dx, nx);
         const std::size_t j0 = lo(o.y - hy, dy, ny), j1 = lo(o.y + hy, dy, ny);
         for (std::size_t j = j0; j <= j1; ++j)
-            for (std::size_t i = i0; i <= i1; ++i) {
-                int covered = 0;
-                for (int b = 0; b < kOpenSamples; ++b)
-                    for (int a = 0; a < kOpenSamples; ++a) {
-                        const double x = (double(i) + (a + 0.5) / kOpenSamples) * dx;
-                        const double y = (double(j) + (b + 0.5) / kOpenSamples) * dy;
-                        bool inside = false;
-                        for (const Obstacle& other : obstacles) inside = inside || other.contains(x, y, 0.0);
-                        covered += inside;
-                    }
-                open[j * nx + i] = 1.0 - double(covered) / double(kOpenSamples * kOpenSamples);
+            for (std::size_t i = i0; i <= i1; ++i)
+                reach.emplace_back(j * nx + i, static_cast<std::uint32_t>(k));
+    }
+    std::sort(reach.begin(), reach.end());
+    for (std::size_t first = 0; first < reach.size();) {
+        const std::size_t cell = reach[first].first;
+        std::size_t last = first;
+        while (last < reach.size() && reach[last].first == cell) ++last;
+        const double i = double(cell % nx), j = double(cell / nx);
+        int covered = 0;
+        for (int b = 0; b < kOpenSamples; ++b)
+            for (int a = 0; a < kOpenSamples; ++a) {
+                const double x = (i + (a + 0.5) / kOpenSamples) * dx;
+                const double y = (j + (b + 0.5) / kOpenSamples) * dy;
+                bool inside = false;
+                for (std::size_t r = first; r < last && !inside; ++r)
+                    inside = obstacles[reach[r].second].contains(x, y, 0.0);
+                covered += inside;
             }
+        open[cell] = 1.0 - double(covered) / double(kOpenSamples * kOpenSamples);
+        first = last;
     }
     return open;
 }

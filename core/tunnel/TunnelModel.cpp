@@ -14,6 +14,9 @@ namespace {
 constexpr double kPistonTravel = 0.9;
 // Refused above this many free-stream collisions per molecule and step (as the DSMC cell refuses).
 constexpr double kRefusedNuDt = 10.0;
+// Refused above this many molecule–body tests per step: every flight is tested against every body, at
+// about 15 ns a test on one core, so this bound keeps a step under a second (docs/wind-tunnel.md#limits).
+constexpr double kMaxBodyTestsPerStep = 5e7;
 } // namespace
 
 TunnelModel::TunnelModel() {
@@ -38,6 +41,19 @@ void TunnelModel::checkObstacles(const TunnelParams& next, const std::vector<Obs
                                        formatNumber(next.boxWidth, 4) + "] × [0, " +
                                        formatNumber(next.boxHeight, 4) + "] m");
     }
+    // The cost of a step grows with molecules × bodies; the free stream's fill is the molecule count the
+    // run settles at.
+    const double molecules = std::max(1.0, next.streamDensity * next.boxWidth * next.boxHeight / next.fn);
+    const double tests = molecules * static_cast<double>(obstacles.size());
+    if (tests > kMaxBodyTestsPerStep)
+        throw PresetError("obstacles",
+                          std::to_string(obstacles.size()) + " bodies in a stream of " +
+                              formatNumber(molecules, 3) + " molecules make " + formatNumber(tests, 3) +
+                              " body tests a step, more than a step can do (" +
+                              formatNumber(kMaxBodyTestsPerStep, 2) + "); use at most " +
+                              std::to_string(static_cast<long long>(kMaxBodyTestsPerStep / molecules)) +
+                              " bodies, or raise fn to at least " +
+                              formatNumber(next.fn * tests / kMaxBodyTestsPerStep, 3));
 }
 
 void TunnelModel::refuseParams(const TunnelParams& next) const {

@@ -249,6 +249,52 @@ private slots:
         QVERIFY(clock.elapsed() < 20000); // refused before any step, not after a 27 s one
     }
 
+    // A fluid fill far larger than its tank is refused at once, also when the backend is chosen by the
+    // particle count (before, counting the 1e10 grid points of the fill took minutes).
+    void fluidFillLargerThanTheTankIsRefusedAtOnce() {
+        QElapsedTimer clock;
+        clock.start();
+        const auto r = runCli({"run", "fluid-write-up", "--set", "fill_x1=1e5", "--set", "fill_y1=1e5",
+                               "--backend", "auto", "--steps", "1", "--quiet"},
+                              30000);
+        QVERIFY(!r.timedOut);
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains("initial block must lie inside the box"), qPrintable(r.err));
+        QVERIFY2(clock.elapsed() < 5000, qPrintable(QString::number(clock.elapsed()) + " ms"));
+    }
+
+    // Thousands of tunnel bodies: refused before the run with how many a step can take (before, the
+    // set-up took 42 s and each step 3.5 s); as many as allowed build and step at once.
+    void tunnelBodiesAStepCannotTakeAreRefused() {
+        QTemporaryDir dir;
+        const auto withBodies = [&](int count) {
+            QString bodies;
+            for (int k = 0; k < count; ++k)
+                bodies += QString(R"(%1{"shape": "disc", "x": %2, "y": %3, "radius": 0.0005})")
+                              .arg(k ? ", " : "")
+                              .arg(0.002 + 0.096 * ((k * 37) % 1000) / 1000.0)
+                              .arg(0.002 + 0.046 * ((k * 91) % 997) / 997.0);
+            const QString path = dir.filePath(QString("bodies%1.json").arg(count));
+            writeFile(path, QString(R"({"schema": 3, "model": "tunnel", "seed": 1,
+                "params": {"box_width": 0.1, "box_height": 0.05, "cells_x": 100, "cells_y": 50, "fn": 1.0001e14},
+                "obstacles": [%1]})")
+                                .arg(bodies)
+                                .toUtf8());
+            return path;
+        };
+        QElapsedTimer clock;
+        clock.start();
+        const auto refused = runCli({"run", withBodies(5000), "--steps", "2", "--quiet"}, 30000);
+        QCOMPARE(refused.exitCode, 2);
+        QVERIFY2(refused.err.contains("body tests a step") && refused.err.contains("use at most 1000 bodies"),
+                 qPrintable(refused.err));
+        QVERIFY2(clock.elapsed() < 5000, qPrintable(QString::number(clock.elapsed()) + " ms"));
+        clock.restart();
+        const auto allowed = runCli({"run", withBodies(1000), "--steps", "2", "--quiet"}, 30000);
+        QVERIFY2(allowed.exitCode == 0, qPrintable(allowed.err));
+        QVERIFY2(clock.elapsed() < 20000, qPrintable(QString::number(clock.elapsed()) + " ms"));
+    }
+
     void dsmcWarnsWhenInaccurate() {
         const auto r = runCli({"run", "dsmc-bkw", "--set", "dt=6.67e-4", "--steps", "2", "--quiet"});
         QCOMPARE(r.exitCode, 0);
