@@ -16,6 +16,11 @@
 namespace pl {
 
 struct StateRecord {
+    // No array entry of any model's state comes near it (positions, velocities, sums over a window);
+    // above it a kinetic energy or a variance summed over the particles can overflow to infinity and
+    // run on as if it were a state.
+    static constexpr double kLargestArrayValue = 1e100;
+
     std::map<std::string, double> scalars;
     std::map<std::string, std::vector<double>> arrays;
 
@@ -35,8 +40,8 @@ struct StateRecord {
     std::int64_t count(const std::string& key) const;
     bool has(const std::string& key) const { return scalars.count(key) != 0 || arrays.count(key) != 0; }
     // The array named key as T, with `size` entries (any size when size is SIZE_MAX); throws PresetError
-    // when it is missing, has another length, or holds a value that is not finite or that T cannot
-    // represent exactly.
+    // when it is missing, has another length, or holds a value that is not finite, beyond
+    // kLargestArrayValue, or that T cannot represent exactly.
     template <class T> std::vector<T> array(const std::string& key, std::size_t size = SIZE_MAX) const {
         const std::vector<double>& values = rawArray(key, size);
         std::vector<T> out(values.size());
@@ -45,6 +50,8 @@ struct StateRecord {
                 throw PresetError("state." + key, "state." + key + "[" + std::to_string(i) + "] " + why);
             };
             if (!std::isfinite(values[i])) refuse("is not a finite number");
+            if (!(std::abs(values[i]) <= kLargestArrayValue))
+                refuse("is beyond ±1e100, where the sums of squares the observables take overflow");
             if constexpr (std::is_integral_v<T>) // a cast from outside T's range is undefined
                 if (!(values[i] >= static_cast<double>(std::numeric_limits<T>::lowest()) &&
                       values[i] < static_cast<double>(std::numeric_limits<T>::max()) + 1.0))

@@ -9,6 +9,11 @@
 
 namespace pl {
 
+namespace {
+// A cell's running (σ c_r)_max grows past the first estimate in a shock, never by this factor.
+constexpr double kMostSigmaCrMaxFactor = 1000.0;
+} // namespace
+
 const StateTable<TunnelModel, TunnelState>& TunnelModel::stateTable() {
     static const StateTable<TunnelModel, TunnelState> table = [] {
         constexpr auto cells = [](const TunnelModel& m) { return m.openFraction_.size(); };
@@ -50,6 +55,19 @@ void TunnelModel::restoreState(const StateRecord& r) {
         if (!(s.x[i] >= 0 && s.x[i] <= params_.boxWidth && s.y[i] >= 0 && s.y[i] <= params_.boxHeight))
             throw PresetError("state.x", "molecule " + std::to_string(i) + " lies outside the tunnel");
     const int direction = static_cast<int>(r.scalar("piston_direction"));
+    // The NTC and inflow remainders are fractions of a molecule or pair; a (σ c_r)_max far beyond any
+    // the gas reaches would make a step of billions of candidates.
+    for (const char* key : {"remainder", "inflow_remainder"})
+        for (const double fraction : r.array<double>(key))
+            if (!(fraction >= 0 && fraction < 1))
+                throw PresetError(std::string("state.") + key,
+                                  std::string("state.") + key + " must lie in [0, 1)");
+    const double mostSigmaCr = kMostSigmaCrMaxFactor * initialSigmaCrMax();
+    for (const double sigmaCr : r.array<double>("cell_sigma_cr_max"))
+        if (!(sigmaCr >= 0 && sigmaCr <= mostSigmaCr))
+            throw PresetError("state.cell_sigma_cr_max",
+                              "state.cell_sigma_cr_max holds " + formatNumber(sigmaCr, 3) + " m³/s, beyond " +
+                                  formatNumber(mostSigmaCr, 3) + " (1000 × the first estimate of this gas)");
     // Snapshots of earlier builds hold no sampler: their window starts again, as it did then.
     const bool sampled = TunnelSampler::savedIn(r);
     TunnelSampler sampler = sampler_;

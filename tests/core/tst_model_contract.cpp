@@ -175,8 +175,9 @@ private slots:
         sameRow(model, model.sampleSeries(), restored.sampleSeries());
     }
 
-    // A snapshot whose state holds a non-finite number (a null in the file) is refused naming the
-    // field, and the model stays as it was: no kind runs on from a NaN.
+    // A snapshot whose state holds a non-finite number (a null in the file), or one so large that its
+    // square overflows, is refused naming the field, and the model stays as it was: no kind runs on from
+    // a NaN or an infinite energy.
     void nonFiniteStateIsRefused_data() {
         kindsAndBackends();
     }
@@ -196,10 +197,13 @@ private slots:
         int corrupted = 0;
         for (const auto& [key, values] : good.state.arrays) {
             if (values.size() != model.particleCount() || values.empty()) continue;
-            StateRecord bad = good.state;
-            bad.arrays[key][0] = std::numeric_limits<double>::quiet_NaN();
-            QCOMPARE(refusedKey(bad), "state." + key);
-            QCOMPARE(particles(model), before);
+            // NaN, and a finite number whose square overflows (a kinetic energy of inf ran on with exit 0).
+            for (const double value : {std::numeric_limits<double>::quiet_NaN(), -1e300}) {
+                StateRecord bad = good.state;
+                bad.arrays[key][0] = value;
+                QCOMPARE(refusedKey(bad), "state." + key);
+                QCOMPARE(particles(model), before);
+            }
             ++corrupted;
         }
         QVERIFY2(corrupted > 0, "the state has no per-particle array");
