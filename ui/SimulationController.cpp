@@ -34,9 +34,14 @@ QString SimulationController::load(const Preset& preset, const StateRecord* stat
     } catch (const std::exception& e) {
         return QString::fromStdString(e.what());
     }
-    model_ = std::move(next.model);
-    importedFrom_.clear();
     if (!next.message.empty()) emit notice(QString::fromStdString(next.message));
+    adopt(std::move(next.model));
+    return {};
+}
+
+void SimulationController::adopt(std::unique_ptr<Model> model) {
+    model_ = std::move(model);
+    importedFrom_.clear();
     if (const std::string warning = model_->accuracyWarning(); !warning.empty())
         emit notice(tr("Warning: %1").arg(QString::fromStdString(warning)));
     pending_.clear();
@@ -44,7 +49,6 @@ QString SimulationController::load(const Preset& preset, const StateRecord* stat
     applyDirection();
     restartSeries();
     emit modelReplaced();
-    return {};
 }
 
 void SimulationController::showImported(std::unique_ptr<Model> model, TimeSeries series,

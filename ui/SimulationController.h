@@ -26,6 +26,9 @@ public:
     // Loads a preset, and with a snapshot's state continues from it. On error the current experiment is
     // kept and the message returned; empty on success.
     QString load(const Preset& preset, const StateRecord* state = nullptr);
+    // Runs a model built elsewhere as load() runs its own: the command line's record and report build
+    // theirs from its options (--set, --seed, a snapshot) and use the plots of the app.
+    void adopt(std::unique_ptr<Model> model);
     // Shows a run computed elsewhere (a LAMMPS run read back): its last state in the viewport and
     // histograms, its series in the plots. Read-only until the next load(): time does not run and
     // parameters do not change. source says where the data came from, for the status line.
