@@ -218,9 +218,19 @@ void SimulationController::togglePlay() {
 void SimulationController::stepOnce() {
     if (!model_ || isReadOnly()) return;
     pause();
-    model_->step();
+    stepModel();
     sample();
     emit frameAdvanced();
+}
+
+void SimulationController::watchSteps(int every, std::function<void()> atStep) {
+    watchEvery_ = every > 0 && atStep ? every : 0;
+    watch_ = std::move(atStep);
+}
+
+void SimulationController::stepModel() {
+    model_->step();
+    if (watchEvery_ > 0 && !model_->failure() && model_->stepCount() % watchEvery_ == 0) watch_();
 }
 
 void SimulationController::reset() {
@@ -278,7 +288,7 @@ void SimulationController::advanceFrame() {
         model_->tools()->scaleKineticEnergy(std::exp(kHeatPerStepAtFull * heatRate_ * steps));
     {
         const FramePartTimer timer(FramePart::Step);
-        for (int s = 0; s < steps && !model_->failure(); ++s) model_->step();
+        for (int s = 0; s < steps && !model_->failure(); ++s) stepModel();
     }
     stepsSinceClock_ += steps;
     if (rateClock_.isValid() && rateClock_.elapsed() > 500) {

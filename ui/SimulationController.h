@@ -12,6 +12,7 @@
 #include <QElapsedTimer>
 #include <QObject>
 #include <QTimer>
+#include <functional>
 #include <memory>
 
 namespace pl::ui {
@@ -44,6 +45,10 @@ public:
     bool isRunning() const { return timer_.isActive(); }
     int stepsPerFrame() const { return stepsPerFrame_; }
     double stepsPerSecond() const { return stepsPerSecond_; }
+
+    // Calls atStep after every step whose count is a multiple of `every` (0: none), before the frame is
+    // shown: a recording's frames are states after a fixed number of steps, whatever the frame rate.
+    void watchSteps(int every, std::function<void()> atStep);
 
     // Applies parameter values (all or nothing). Returns the error naming the key, or empty.
     QString setParameters(const ParamValues& values);
@@ -101,6 +106,7 @@ private:
     SceneTools* editableTools();
     void restartSeries();
     bool runComplete() const; // the model's planned run length is reached
+    void stepModel();         // one step, and the step watch
 
     std::unique_ptr<Model> model_;
     gl::Backend backend_ = gl::Backend::Auto;
@@ -114,6 +120,8 @@ private:
     int framesSinceSample_ = 0;
     QElapsedTimer rateClock_;
     long long stepsSinceClock_ = 0;
+    int watchEvery_ = 0;
+    std::function<void()> watch_;
 };
 
 } // namespace pl::ui

@@ -276,24 +276,15 @@ int writeReport(const ReportOptions& options) {
     ui::SimulationController controller;
     controller.adopt(std::move(built));
     Model& model = *controller.model();
-    std::vector<std::unique_ptr<ui::SeriesPlot>> plots;
-    std::vector<ui::LabReportContent::Plot> shown;
-    for (const ui::SeriesPlotSpec& spec : ui::seriesPlotSpecs())
-        if (spec.kinds.contains(QString::fromStdString(kind))) {
-            plots.push_back(hiddenPlot(controller, spec, QSize(680, 380)));
-            shown.push_back({spec.title, plots.back()->plot()});
-        }
     stop.runStarts(); // a signal stops the run after its step; the report shows what was run
     const long long every = std::max(1LL, steps / kReportSamples);
     for (long long s = 1; s <= steps && !model.failure() && !stop.caught(); ++s) {
         model.step();
         if (s % every == 0 || s == steps) controller.sample();
     }
-    for (auto& plot : plots) plot->refresh();
-    const QString problem =
-        ui::writeLabReport(ui::gatherLabReport(controller, QString::fromStdString(described.name),
-                                               QString::fromStdString(described.description), shown),
-                           QString::fromStdString(options.out));
+    const QString problem = ui::exportLabReport(controller, QString::fromStdString(described.name),
+                                                QString::fromStdString(described.description),
+                                                QString::fromStdString(options.out));
     if (!problem.isEmpty()) {
         std::cerr << "particlelab-cli: " << problem.toStdString() << "\n";
         return kCannotWrite;

@@ -1,10 +1,13 @@
-// particlelab-cli record, checked by decoding what it wrote: ffprobe for the codec, frame count, size
-// and duration; libavcodec in this test for a frame of MP4 and WebM against the off-screen render of the
-// same state (PSNR); the GIF's frame count and loop; a SIGINT leaves a clip with the frames so far; bad
-// options are refused with exit 2 before anything is written.
+// particlelab-cli record and the app's recorder, checked by decoding what it wrote: ffprobe for the codec,
+// frame count, size and duration; libavcodec in this test for a frame of MP4 and WebM against the off-screen
+// render of the same state (PSNR); the GIF's frame count and loop; a SIGINT leaves a clip with the frames so
+// far; bad options are refused with exit 2 before anything is written.
 #include "CliRunner.h"
 
+#include "SimulationController.h"
 #include "catalog/ModelCatalog.h"
+#include "record/AppRecorder.h"
+#include "record/ClipFrames.h"
 #include "viewport/ScenePainter.h"
 
 extern "C" {
@@ -142,11 +145,15 @@ double psnr(const QImage& a, const QImage& b) {
 }
 
 // The scene after `steps` steps of the preset, drawn off screen as the recording draws it bare.
-QImage renderedState(const QString& preset, long long steps) {
+std::unique_ptr<pl::Model> stateAfter(const QString& preset, long long steps) {
     auto model = pl::createModel("gas");
     model->reset(pl::loadPreset(preset.toStdString()));
     for (long long s = 0; s < steps; ++s) model->step();
-    return pl::ui::renderScene(model->sceneView(), kSize);
+    return model;
+}
+
+QImage renderedState(const QString& preset, long long steps) {
+    return pl::ui::renderScene(stateAfter(preset, steps)->sceneView(), kSize);
 }
 
 // The recording of the tests; `changed` replaces options of the same name ("--size", "321x240").
@@ -233,6 +240,40 @@ private slots:
         QVERIFY2(db >= 35.0, qPrintable(QString::number(db)));
         // Another state is far from it: the frame is this state, not any picture of the scene.
         QVERIFY(psnr(renderedState("gas-classroom", (kFrame + 3) * kSteps), decoded) < db - 3.0);
+    }
+
+    // The app takes a frame after every 10 steps inside the stepping, so frames of 3 steps (which a clip
+    // frame falls inside of) still give the states after 0, 10, 20, … steps: the clip does not depend
+    // on the frame rate.
+    void appRecordingTakesAFrameEveryTenStepsWhateverTheFrameRate() {
+        QTemporaryDir dir;
+        const QString out = dir.filePath("app.mp4");
+        pl::ui::SimulationController controller;
+        controller.setBackend(pl::gl::Backend::Cpu);
+        QVERIFY(controller.load(pl::loadPreset("gas-classroom")).isEmpty());
+        controller.setStepsPerFrame(3);
+        pl::ui::AppRecorder recorder(&controller);
+        QVERIFY(recorder.start(out, "gas-classroom").isEmpty());
+        QVERIFY(recorder.isRecording());
+        for (int frame = 0; frame < 130; ++frame) controller.advanceFrame(); // 390 steps
+        recorder.stop();
+        QVERIFY(!recorder.isRecording());
+        QCOMPARE(recorder.frames(), 40LL); // after 0, 10, …, 390 steps
+        const Probe p = ffprobe(out);
+        QCOMPARE(p.codec, QString("h264"));
+        QCOMPARE(p.frames, 40LL);
+        QCOMPARE(QSize(p.width, p.height), pl::ui::kAppClipSize);
+        constexpr int kFrame = 35; // after the title's opening second
+        pl::ui::ClipLook look;
+        look.size = pl::ui::kAppClipSize;
+        look.fps = pl::ui::kAppClipFps;
+        look.title = "gas-classroom";
+        look.timeUnit = "T";
+        const auto model = stateAfter("gas-classroom", kFrame * pl::ui::kAppStepsPerClipFrame);
+        const QImage expected = pl::ui::clipFrame(look, model->sceneView(), model->time(), kFrame);
+        const double db = psnr(expected, decodeFrame(out, kFrame));
+        qInfo("app frame %d: PSNR %.1f dB", kFrame, db);
+        QVERIFY2(db >= 35.0, qPrintable(QString::number(db)));
     }
 
     void gifLoopsForEver() {

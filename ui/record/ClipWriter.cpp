@@ -17,16 +17,16 @@ ClipWriter::~ClipWriter() {
 void ClipWriter::run() {
     bool failed = false; // the worker's own copy of "error_ is set", read without the lock
     for (;;) {
-        QImage frame;
+        std::function<QImage()> draw;
         {
             std::unique_lock lock(mutex_);
             changed_.wait(lock, [this] { return !queue_.empty() || closing_; });
             if (queue_.empty()) return; // closing, and everything was encoded
-            frame = std::move(queue_.front());
+            draw = queue_.front();
         }
         std::exception_ptr error;
         try {
-            if (!failed) encoder_.write(frame);
+            if (!failed) encoder_.write(draw());
         } catch (...) {
             error = std::current_exception();
             failed = true;
@@ -47,10 +47,14 @@ void ClipWriter::rethrow() {
 }
 
 void ClipWriter::write(QImage frame) {
+    writeDrawn([frame = std::move(frame)] { return frame; });
+}
+
+void ClipWriter::writeDrawn(std::function<QImage()> draw) {
     std::unique_lock lock(mutex_);
     changed_.wait(lock, [this] { return queue_.size() < kClipQueueFrames || error_; });
     rethrow();
-    queue_.push_back(std::move(frame));
+    queue_.push_back(std::move(draw));
     changed_.notify_all();
 }
 

@@ -9,6 +9,7 @@
 #include <condition_variable>
 #include <deque>
 #include <exception>
+#include <functional>
 #include <mutex>
 #include <thread>
 
@@ -26,6 +27,9 @@ public:
 
     // Queues the next frame. Throws the VideoError the encoder met on an earlier frame (a full disk).
     void write(QImage frame);
+    // Queues a frame that the worker draws first (the app hands over the scene, so drawing too leaves
+    // the window's thread).
+    void writeDrawn(std::function<QImage()> draw);
     // Encodes what is queued (or, with dropQueued, drops it: a cancelled encode), drains the encoder and
     // finishes the container. Throws a VideoError met on the way, once.
     void finish(bool dropQueued = false);
@@ -41,7 +45,7 @@ private:
     VideoEncoder encoder_;
     mutable std::mutex mutex_;
     std::condition_variable changed_;
-    std::deque<QImage> queue_;
+    std::deque<std::function<QImage()>> queue_;
     bool closing_ = false, finished_ = false;
     long long written_ = 0;
     std::exception_ptr error_;

@@ -48,6 +48,12 @@ LabReportContent gatherLabReport(SimulationController& controller, const QString
 // error sentence, or empty on success. The file is written whole or not at all (QSaveFile).
 QString writeLabReport(const LabReportContent& content, const QString& path);
 
+// The report of the controller's experiment now, with every plot of its kind made afresh from the series
+// store (hidden widgets: the app's docks stay as they are, and the CLI needs none). Returns an error
+// sentence, or empty.
+QString exportLabReport(SimulationController& controller, const QString& name, const QString& description,
+                        const QString& path);
+
 // Whether a path's suffix names a report format.
 bool isReportPath(const QString& path);
 

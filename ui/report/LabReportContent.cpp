@@ -9,7 +9,11 @@
 #include "catalog/ModelCatalog.h"
 #include "common/Statistics.h"
 #include "i18n/Translations.h"
+#include "plots/SeriesPlot.h"
+#include "plots/SeriesPlotSpecs.h"
 #include "viewport/ScenePainter.h"
+
+#include <qcustomplot.h> // before the use of SeriesPlot, which names QCPAxis
 
 #include <QDateTime>
 #include <QFile>
@@ -22,6 +26,7 @@ namespace pl::ui {
 namespace {
 
 const QSize kSceneImageSize(1200, 900); // [px] the viewport picture, 4:3
+const QSize kPlotWidgetSize(680, 380);  // [px] the plots' layout size while they are filled
 
 QString valueText(const ParamValue& value) {
     if (const auto* number = std::get_if<double>(&value))
@@ -141,6 +146,26 @@ LabReportContent gatherLabReport(SimulationController& controller, const QString
     c.scene = renderScene(model->sceneView(), kSceneImageSize);
     c.plots = plots;
     return c;
+}
+
+QString exportLabReport(SimulationController& controller, const QString& name, const QString& description,
+                        const QString& path) {
+    const Model* model = controller.model();
+    if (!model) return QStringLiteral("There is no experiment to report on.");
+    const QString kind = QString::fromStdString(model->kind());
+    std::vector<std::unique_ptr<SeriesPlot>> widgets;
+    std::vector<LabReportContent::Plot> plots;
+    for (const SeriesPlotSpec& spec : seriesPlotSpecs()) {
+        if (!spec.kinds.contains(kind)) continue;
+        auto plot = std::make_unique<SeriesPlot>(&controller, spec);
+        plot->setAttribute(Qt::WA_DontShowOnScreen); // laid out and refreshed as a shown dock, no window
+        plot->resize(kPlotWidgetSize);
+        plot->show();
+        plot->refresh();
+        plots.push_back({spec.title, plot->plot()});
+        widgets.push_back(std::move(plot));
+    }
+    return writeLabReport(gatherLabReport(controller, name, description, plots), path);
 }
 
 } // namespace pl::ui
