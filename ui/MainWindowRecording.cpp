@@ -17,7 +17,7 @@
 namespace pl::ui {
 
 void MainWindow::createReportAction(QMenu* file) {
-    QAction* report = file->addAction(tr("Export &report…"));
+    QAction* report = file->addAction(tr("Expor&t report…"));
     report->setObjectName("exportReportAction");
     report->setStatusTip(tr("Write a lab report of the experiment: parameters, run, scene, plots, readouts"));
     connect(report, &QAction::triggered, this, [this] {

@@ -212,8 +212,10 @@ int recordClip(const RecordOptions& options) {
         }
         written = encoder.framesWritten();
     } catch (const ui::VideoError& e) {
-        std::cerr << "particlelab-cli: " << e.what() << "; the " << written
-                  << " frames written before are kept in '" << options.out << "'\n";
+        // The encoder holds a few frames back, and a container writes in pieces (an MP4 fragment a second):
+        // what plays is what reached the file, which the number of frames encoded only bounds.
+        std::cerr << "particlelab-cli: " << e.what() << "; '" << options.out
+                  << "' keeps what reached it before, up to " << written << " frames\n";
         exitCode = kCannotWrite;
     } catch (const std::bad_alloc&) {
         std::cerr << "particlelab-cli: the recording ran out of memory; the " << written

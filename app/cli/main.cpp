@@ -5,6 +5,7 @@
 #include "ScaleOutCommands.h"
 #ifdef PARTICLELAB_RECORDING
 #include "MediaCommands.h"
+#include "MediaModule.h"
 #endif
 #include "common/AtomicFile.h"
 #include "common/ThreadGovernor.h"
@@ -273,8 +274,12 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("columns")) return listColumns(columnsScene);
     if (app.got_subcommand("run")) return runSimulation(run);
 #ifdef PARTICLELAB_RECORDING
+#ifdef PARTICLELAB_MEDIA_PROGRAM
     if (app.got_subcommand("record")) return recordClip(record);
     if (app.got_subcommand("report")) return writeReport(report);
+#else
+    if (app.got_subcommand("record") || app.got_subcommand("report")) return execMediaProgram(argv);
+#endif
 #endif
     return benchmark(bench);
 }

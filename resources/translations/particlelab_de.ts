@@ -2632,8 +2632,8 @@ Wirkt nach „Zurücksetzen“.</translation>
         <translation>Ziehen Sie eine Linie quer durch die Strömung: das Dock „Profil“ zeigt ein abgetastetes Feld entlang der Linie</translation>
     </message>
     <message>
-        <source>Export &amp;report…</source>
-        <translation>&amp;Bericht exportieren…</translation>
+        <source>Expor&amp;t report…</source>
+        <translation>Bericht expor&amp;tieren…</translation>
     </message>
     <message>
         <source>Write a lab report of the experiment: parameters, run, scene, plots, readouts</source>
