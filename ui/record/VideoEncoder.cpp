@@ -24,7 +24,7 @@ namespace pl::ui {
 
 namespace {
 
-constexpr int kX264Crf = 14;            // PSNR ≥ 35 dB against the drawn frame for a moving gas at 720p
+constexpr int kX264Crf = 14;        // PSNR ≥ 35 dB against the drawn frame for a moving gas at 720p
 constexpr int kVp9Crf = 18;         // libvpx-vp9 constant quality (0 best … 63): ≥ 35 dB as H.264
 constexpr int kVp9CpuUsed = 8;      // the fastest realtime setting: encodes 720p at ≥ 30 frames/s
 constexpr int kGifColours = 256;    // an 8-bit GIF palette
