@@ -13,6 +13,9 @@ packages=(
   qt6-base-dev libqt6opengl6-dev qt6-svg-dev libqcustomplot-dev
   # Qt Linguist: lupdate/lrelease, their CMake functions, and Qt's own strings in other languages
   qt6-l10n-tools qt6-tools-dev qt6-translations-l10n
+  # recording clips through FFmpeg's libraries (ui/record/); ffprobe and pdftotext / pdftoppm read the
+  # clips and reports back in the tests
+  libavformat-dev libavcodec-dev libswscale-dev libavutil-dev ffmpeg poppler-utils
   # numerics, JSON, command line
   libeigen3-dev nlohmann-json3-dev libcli11-dev
   # OpenGL loading and headless contexts; Mesa's software renderer

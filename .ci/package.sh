@@ -53,6 +53,7 @@ metainfo_version=$(grep -o -m1 '<release version="[^"]*"' resources/desktop/part
 tree=$(mktemp -d)
 dpkg-deb --extract "$deb" "$tree"
 for path in usr/bin/particlelab usr/bin/particlelab-cli usr/bin/particlelab-bench \
+  usr/libexec/particlelab/particlelab-cli-media \
   usr/share/applications/particlelab.desktop usr/share/mime/packages/particlelab.xml \
   usr/share/metainfo/io.github.particlelab.particlelab.metainfo.xml \
   usr/share/icons/hicolor/scalable/apps/particlelab.svg usr/share/icons/hicolor/48x48/apps/particlelab.png \
@@ -144,6 +145,9 @@ part "clean root: the programs"
 in_root "cd /root && particlelab-cli run gas-write-up --steps 200 --out s.csv --quiet && wc -l s.csv && head -n 2 s.csv"
 rows=$(($(wc -l <"$root/root/s.csv") - 1))
 [ "$rows" -gt 0 ] || fail "particlelab-cli wrote no rows"
+# record runs in particlelab-cli-media from libexec, with FFmpeg's libraries from the package's
+# dependencies, and needs no display.
+in_root "cd /root && particlelab-cli record gas-write-up --out c.gif --seconds 1 --fps 5 --size 160x120 --quiet && ls -l c.gif"
 in_root "particlelab --version && particlelab-cli --version && particlelab-bench --version"
 [ "$(chroot "$root" particlelab --version)" = "particlelab $version" ] || fail "particlelab --version is not $version"
 in_root "particlelab --help | head -n 3"

@@ -44,6 +44,7 @@ public:
     bool isModified() const { return modified_; }
     void setModified(bool modified);
     QString title() const; // preset name, or the file name
+    QString description() const { return QString::fromStdString(meta_.description); }
     QString filePath() const { return path_; }
     QStringList recentFiles() const;
     static QString userPresetDirectory();

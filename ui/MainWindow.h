@@ -13,6 +13,7 @@ class QLabel;
 class QMenu;
 class QSlider;
 class QSpinBox;
+class QToolBar;
 
 namespace pl::ui {
 
@@ -27,6 +28,7 @@ class ViewportCore;
 class PresentMode;
 class Autosave;
 class ViewportRoom;
+class AppRecorder;
 
 class MainWindow : public QMainWindow {
     Q_OBJECT
@@ -41,6 +43,7 @@ public:
     DistributionPlot* histogram() const { return histogram_; }
     ParameterPanel* parameters() const { return parameters_; }
     const std::vector<SeriesPlot*>& seriesPlots() const { return seriesPlots_; }
+    AppRecorder* recorder() const { return recorder_; }
     ProfilePlot* profilePlot() const { return profilePlot_; }
     ViewChooser* viewChooser() const { return viewChooser_; }
     QWidget* viewport() const { return viewport_; }
@@ -73,6 +76,8 @@ private:
     void createViewport();
     void createActions();
     void createLammpsActions(QMenu* file);
+    void createReportAction(QMenu* file);               // MainWindowRecording.cpp
+    void createRecordAction(QMenu* sim, QToolBar* bar); // MainWindowRecording.cpp
     void createRunOnLammpsAction(QMenu* sim);
     QString writeLammpsDeck(const QString& dir, long long& steps); // exportToLammps; steps: the deck's run
     void createSceneBar();
@@ -106,6 +111,9 @@ private:
     QSlider* heat_ = nullptr;
     QAction* gravity_ = nullptr;
     QLabel* status_ = nullptr;
+    AppRecorder* recorder_ = nullptr;
+    QAction* recordAction_ = nullptr;
+    QLabel* recordingLabel_ = nullptr; // "● REC 0:03.2" while a clip is recorded
     QAction* playAction_ = nullptr;
     QList<QAction*> runActions_; // play, step, reset, speed: off while an imported run is shown
     QAction* projectorAction_ = nullptr;

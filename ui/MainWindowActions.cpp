@@ -84,6 +84,7 @@ void MainWindow::createActions() {
                 const QString error = saveViewportImage(path);
                 if (!error.isEmpty()) QMessageBox::critical(this, tr("Cannot save the image"), error);
             });
+    createReportAction(file);
     file->addSeparator();
     createLammpsActions(file);
     file->addSeparator();
@@ -115,6 +116,7 @@ void MainWindow::createActions() {
     connect(reset, &QAction::triggered, controller_, &SimulationController::reset);
     bar->addActions({playAction_, step, reset});
     runActions_ = {playAction_, step, reset};
+    createRecordAction(sim, bar);
     bar->addSeparator();
     bar->addWidget(new QLabel(tr(" Steps per frame "), bar));
     speed_ = new QSpinBox(bar);

@@ -34,9 +34,14 @@ QString SimulationController::load(const Preset& preset, const StateRecord* stat
     } catch (const std::exception& e) {
         return QString::fromStdString(e.what());
     }
-    model_ = std::move(next.model);
-    importedFrom_.clear();
     if (!next.message.empty()) emit notice(QString::fromStdString(next.message));
+    adopt(std::move(next.model));
+    return {};
+}
+
+void SimulationController::adopt(std::unique_ptr<Model> model) {
+    model_ = std::move(model);
+    importedFrom_.clear();
     if (const std::string warning = model_->accuracyWarning(); !warning.empty())
         emit notice(tr("Warning: %1").arg(QString::fromStdString(warning)));
     pending_.clear();
@@ -44,7 +49,6 @@ QString SimulationController::load(const Preset& preset, const StateRecord* stat
     applyDirection();
     restartSeries();
     emit modelReplaced();
-    return {};
 }
 
 void SimulationController::showImported(std::unique_ptr<Model> model, TimeSeries series,
@@ -214,9 +218,19 @@ void SimulationController::togglePlay() {
 void SimulationController::stepOnce() {
     if (!model_ || isReadOnly()) return;
     pause();
-    model_->step();
+    stepModel();
     sample();
     emit frameAdvanced();
+}
+
+void SimulationController::watchSteps(int every, std::function<void()> atStep) {
+    watchEvery_ = every > 0 && atStep ? every : 0;
+    watch_ = std::move(atStep);
+}
+
+void SimulationController::stepModel() {
+    model_->step();
+    if (watchEvery_ > 0 && !model_->failure() && model_->stepCount() % watchEvery_ == 0) watch_();
 }
 
 void SimulationController::reset() {
@@ -274,7 +288,7 @@ void SimulationController::advanceFrame() {
         model_->tools()->scaleKineticEnergy(std::exp(kHeatPerStepAtFull * heatRate_ * steps));
     {
         const FramePartTimer timer(FramePart::Step);
-        for (int s = 0; s < steps && !model_->failure(); ++s) model_->step();
+        for (int s = 0; s < steps && !model_->failure(); ++s) stepModel();
     }
     stepsSinceClock_ += steps;
     if (rateClock_.isValid() && rateClock_.elapsed() > 500) {

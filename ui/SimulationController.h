@@ -12,6 +12,7 @@
 #include <QElapsedTimer>
 #include <QObject>
 #include <QTimer>
+#include <functional>
 #include <memory>
 
 namespace pl::ui {
@@ -26,6 +27,9 @@ public:
     // Loads a preset, and with a snapshot's state continues from it. On error the current experiment is
     // kept and the message returned; empty on success.
     QString load(const Preset& preset, const StateRecord* state = nullptr);
+    // Runs a model built elsewhere as load() runs its own: the command line's record and report build
+    // theirs from its options (--set, --seed, a snapshot) and use the plots of the app.
+    void adopt(std::unique_ptr<Model> model);
     // Shows a run computed elsewhere (a LAMMPS run read back): its last state in the viewport and
     // histograms, its series in the plots. Read-only until the next load(): time does not run and
     // parameters do not change. source says where the data came from, for the status line.
@@ -41,6 +45,10 @@ public:
     bool isRunning() const { return timer_.isActive(); }
     int stepsPerFrame() const { return stepsPerFrame_; }
     double stepsPerSecond() const { return stepsPerSecond_; }
+
+    // Calls atStep after every step whose count is a multiple of `every` (0: none), before the frame is
+    // shown: a recording's frames are states after a fixed number of steps, whatever the frame rate.
+    void watchSteps(int every, std::function<void()> atStep);
 
     // Applies parameter values (all or nothing). Returns the error naming the key, or empty.
     QString setParameters(const ParamValues& values);
@@ -98,6 +106,7 @@ private:
     SceneTools* editableTools();
     void restartSeries();
     bool runComplete() const; // the model's planned run length is reached
+    void stepModel();         // one step, and the step watch
 
     std::unique_ptr<Model> model_;
     gl::Backend backend_ = gl::Backend::Auto;
@@ -111,6 +120,8 @@ private:
     int framesSinceSample_ = 0;
     QElapsedTimer rateClock_;
     long long stepsSinceClock_ = 0;
+    int watchEvery_ = 0;
+    std::function<void()> watch_;
 };
 
 } // namespace pl::ui

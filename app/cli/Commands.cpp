@@ -35,6 +35,8 @@ double secondsSince(Clock::time_point start) {
     return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
+} // namespace
+
 // --threads N fixes the team; without it each model's steps run on the team its run measures fastest,
 // up to every core (ThreadGovernor.h): a second thread never makes a run on a busy machine slower.
 void setThreads(int threads) {
@@ -67,6 +69,8 @@ std::unique_ptr<Model> prepare(const std::string& name, const std::vector<std::s
     if (continues) choice.model->restoreState(snapshot.state);
     return std::move(choice.model);
 }
+
+namespace {
 
 // Writes what makeText returns to path; nothing is formatted when no file was asked for.
 template <class MakeText> void writeText(const std::string& path, MakeText makeText) {

@@ -6,6 +6,7 @@
 #include "gas/GasIntegratorTable.h"
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -59,6 +60,14 @@ struct SweepOptions {
     double horizon = 0;            // simulated time of each run from a preset; 0: 64 of its steps
     std::string out;               // CSV; standard output when empty
 };
+
+// Fixes the OpenMP team at threads, or (0) lets each run measure the fastest team.
+void setThreads(int threads);
+// The experiment a command runs: a built-in preset, a preset file with "key=value" overrides and a seed, or
+// a snapshot that continues as saved (it takes neither). backend: cpu, gl or auto; a backend that cannot be
+// had is said on stderr. Throws what reading or building throws (bad input).
+std::unique_ptr<Model> prepare(const std::string& name, const std::vector<std::string>& sets,
+                               std::optional<std::uint64_t> seed, const std::string& backend);
 
 // Writes text to path atomically (kCannotWrite and a message when it cannot), or to standard output.
 int writeOrPrint(const std::string& path, const std::string& text);

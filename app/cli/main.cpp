@@ -3,6 +3,10 @@
 #include "MethodsCommands.h"
 #include "OptionChecks.h"
 #include "ScaleOutCommands.h"
+#ifdef PARTICLELAB_RECORDING
+#include "MediaCommands.h"
+#include "MediaModule.h"
+#endif
 #include "common/AtomicFile.h"
 #include "common/ThreadGovernor.h"
 
@@ -187,6 +191,61 @@ int main(int argc, char** argv) {
         ->transform(wholeNumber(0, std::numeric_limits<long long>::max()));
     relaxCmd->add_option("--out", relax.out, "CSV file (default: standard output)")->check(fileName());
 
+#ifdef PARTICLELAB_RECORDING
+    RecordOptions record;
+    auto* recordCmd = app.add_subcommand(
+        "record",
+        "Record a clip (MP4, WebM or GIF by the suffix of --out) in simulated time, without a display");
+    recordCmd->add_option("preset", record.preset, "Built-in preset name, preset file or snapshot")
+        ->required();
+    recordCmd
+        ->add_option("--out", record.out,
+                     "The clip: .mp4 (H.264), .webm (VP9) or .gif; written as it "
+                     "is recorded, and playable when stopped")
+        ->required()
+        ->check(fileName());
+    recordCmd->add_option("--seconds", record.seconds, "Length of the clip [s] (default 10)")
+        ->check(positiveReal(false, 3600.0));
+    recordCmd->add_option("--fps", record.fps, "Frames per second of the clip (default 30)")
+        ->transform(wholeNumber(1, 120));
+    recordCmd
+        ->add_option("--steps-per-frame", record.stepsPerFrame,
+                     "Model steps between two frames: the simulated time a frame shows (default 10)")
+        ->transform(wholeNumber(1, 100000));
+    recordCmd->add_option("--size", record.size, "Frame size WIDTHxHEIGHT in pixels (default 1280x720)");
+    recordCmd->add_option("--plot", record.plot, "A plot of the scene beside it, by name (e.g. energyPlot)");
+    recordCmd->add_flag("--no-captions", record.noCaptions,
+                        "No title over the first second and no time readout");
+    recordCmd->add_option("--set", record.sets,
+                          "Override a parameter: key=value (repeatable), in the scene's units");
+    recordCmd->add_option("--seed", record.seed, "Random seed (default: the preset's)")
+        ->transform(wholeNumber(0, std::numeric_limits<long long>::max()));
+    recordCmd->add_option("--threads", record.threads, kThreadsHelp)->transform(threadCount());
+    recordCmd->add_option("--backend", record.backend, "cpu, gl or auto")
+        ->check(CLI::IsMember({"cpu", "gl", "auto"}));
+    recordCmd->add_flag("--quiet", record.quiet, "No progress line and no summary");
+    recordCmd->footer(sceneUnits());
+
+    ReportOptions report;
+    auto* reportCmd = app.add_subcommand(
+        "report", "Run an experiment and write its lab report: PDF, or one self-contained HTML page (.html)");
+    reportCmd->add_option("preset", report.preset, "Built-in preset name, preset file or snapshot")
+        ->required();
+    reportCmd->add_option("--out", report.out, "The report: .pdf or .html")->required()->check(fileName());
+    reportCmd
+        ->add_option("--steps", report.steps,
+                     "Steps to run first (default: the preset's run length, else 1000)")
+        ->transform(wholeNumber(0, kMaxSteps));
+    reportCmd->add_option("--set", report.sets,
+                          "Override a parameter: key=value (repeatable), in the scene's units");
+    reportCmd->add_option("--seed", report.seed, "Random seed (default: the preset's)")
+        ->transform(wholeNumber(0, std::numeric_limits<long long>::max()));
+    reportCmd->add_option("--threads", report.threads, kThreadsHelp)->transform(threadCount());
+    reportCmd->add_option("--backend", report.backend, "cpu, gl or auto")
+        ->check(CLI::IsMember({"cpu", "gl", "auto"}));
+    reportCmd->footer(sceneUnits());
+#endif
+
     ScaleOutCli scaleOut(app);
 
     try {
@@ -216,5 +275,13 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("list")) return listPresets();
     if (app.got_subcommand("columns")) return listColumns(columnsScene);
     if (app.got_subcommand("run")) return runSimulation(run);
+#ifdef PARTICLELAB_RECORDING
+#ifdef PARTICLELAB_MEDIA_PROGRAM
+    if (app.got_subcommand("record")) return recordClip(record);
+    if (app.got_subcommand("report")) return writeReport(report);
+#else
+    if (app.got_subcommand("record") || app.got_subcommand("report")) return execMediaProgram(argv);
+#endif
+#endif
     return benchmark(bench);
 }

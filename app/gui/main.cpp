@@ -1,6 +1,6 @@
 // particlelab: the desktop application.
 // Usage: particlelab [PRESET|FILE] [--backend cpu|gl|auto] [--screenshot FILE [--frames N]]
-//                    [--measure-fps SECONDS] [--present]
+//                    [--measure-fps SECONDS] [--record CLIP] [--present]
 //        particlelab --lab PAGE --plot FILE [--csv FILE]   (a methods-lab page, no window)
 //        particlelab --help | --version                    (answered without a display)
 #include "Autosave.h"
@@ -12,6 +12,7 @@
 #include "i18n/Translations.h"
 #include "methods/LabBatch.h"
 #include "present/PresentMode.h"
+#include "record/AppRecorder.h"
 #include "viewport/ViewportCore.h"
 
 #include <QApplication>
@@ -68,6 +69,11 @@ struct CommandLine {
     const QCommandLineOption measureFps{
         "measure-fps", "Run for this many seconds as a user would, print the frame rate and quit.",
         "seconds"};
+    const QCommandLineOption record{
+        "record",
+        "Record the run as Simulation > Record clip does, to this file (MP4, WebM "
+        "or GIF by its suffix); with --measure-fps until it quits.",
+        "file"};
     const QCommandLineOption present{
         "present", "Open in present mode: full screen, the viewport, one plot and a lesson's controls."};
     const QCommandLineOption backend{"backend", "Compute backend: cpu, gl or auto (default: as last chosen).",
@@ -90,7 +96,7 @@ struct CommandLine {
             "(default: gas-write-up)",
             "[preset]");
         for (const QCommandLineOption* option :
-             {&lab, &plotFile, &csvFile, &backend, &screenshot, &frames, &measureFps, &present})
+             {&lab, &plotFile, &csvFile, &backend, &screenshot, &frames, &measureFps, &record, &present})
             parser.addOption(*option);
     }
 };
@@ -201,6 +207,14 @@ int main(int argc, char** argv) {
                          qPrintable(parser.value(options.screenshot)));
         return saved ? 0 : 4;
     }
+    if (parser.isSet(options.record)) {
+        const QString problem =
+            window.recorder()->start(parser.value(options.record), window.document()->title());
+        if (!problem.isEmpty()) {
+            std::fprintf(stderr, "particlelab: %s\n", qPrintable(problem));
+            return 2;
+        }
+    }
     window.controller()->play();
     if (parser.isSet(options.measureFps)) {
         // Frames actually drawn by the viewport while the simulation runs at its normal frame timer.
@@ -210,11 +224,13 @@ int main(int argc, char** argv) {
         const long long startStep = window.controller()->model()->stepCount();
         QTimer::singleShot(static_cast<int>(1000 * parser.value(options.measureFps).toDouble()), &app, [&] {
             const double seconds = clock.elapsed() / 1000.0;
+            const long long clipFrames = window.recorder()->frames();
+            window.recorder()->stop();
             std::printf("{\"preset\": \"%s\", \"seconds\": %.2f, \"fps\": %.1f, \"steps_per_second\": %.0f, "
-                        "\"frame_parts\": %s}\n",
+                        "\"clip_frames\": %lld, \"frame_parts\": %s}\n",
                         qPrintable(window.document()->title()), seconds,
                         window.viewportCore()->framesPerSecond(),
-                        (window.controller()->model()->stepCount() - startStep) / seconds,
+                        (window.controller()->model()->stepCount() - startStep) / seconds, clipFrames,
                         qPrintable(pl::ui::FrameProfile::instance().report()));
             std::fflush(stdout);
             window.document()->setModified(false);

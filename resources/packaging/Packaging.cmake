@@ -43,7 +43,9 @@ set(CPACK_DEBIAN_PACKAGE_CONTROL_STRICT_PERMISSION ON)
 # Libraries come from dpkg-shlibdeps; these are loaded at run time and no link shows them: libepoxy opens
 # the EGL and GL dispatchers (libegl1, libgl1) itself, Mesa's drivers (llvmpipe where there is no GPU)
 # serve GLX windows and headless EGL contexts, and Qt loads its platform plugins and themes. Qt's Wayland plugin and Qt's own strings in other languages are recommended; LAMMPS
-# and Open MPI run the scale-out commands (docs/scale-out.md).
+# and Open MPI run the scale-out commands (docs/scale-out.md). FFmpeg's libraries (recording: libavformat,
+# libavcodec, libswscale, libavutil) are linked, so dpkg-shlibdeps lists them; libavcodec's package
+# brings the encoders it was built with (libx264, libvpx), and the CLI's offscreen platform is Qt's own.
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
 set(CPACK_DEBIAN_PACKAGE_DEPENDS "libegl1, libgl1, libgl1-mesa-dri, libglx-mesa0, libegl-mesa0, qt6-qpa-plugins")
 set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "qt6-wayland, qt6-translations-l10n")

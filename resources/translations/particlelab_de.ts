@@ -1518,6 +1518,33 @@ Wirkt nach „Zurücksetzen“.</translation>
     </message>
 </context>
 <context>
+    <name>pl::ui::AppRecorder</name>
+    <message>
+        <source>the experiment was replaced</source>
+        <translation>das Experiment wurde ersetzt</translation>
+    </message>
+    <message>
+        <source>the model stopped</source>
+        <translation>das Modell ist stehen geblieben</translation>
+    </message>
+    <message>
+        <source>Nothing to record.</source>
+        <translation>Es gibt nichts aufzunehmen.</translation>
+    </message>
+    <message>
+        <source>%1 (%2 s of clip)</source>
+        <translation>%1 (%2 s Clip)</translation>
+    </message>
+    <message>
+        <source>Clip saved, %1</source>
+        <translation>Clip gespeichert, %1</translation>
+    </message>
+    <message>
+        <source>The clip ended early (%1); saved %2</source>
+        <translation>Der Clip endete vorzeitig (%1); gespeichert: %2</translation>
+    </message>
+</context>
+<context>
     <name>pl::ui::Autosave</name>
     <message>
         <source>Cannot create %1</source>
@@ -2603,6 +2630,54 @@ Wirkt nach „Zurücksetzen“.</translation>
     <message>
         <source>Drag a line across the flow: the Profile dock plots a sampled field along it</source>
         <translation>Ziehen Sie eine Linie quer durch die Strömung: das Dock „Profil“ zeigt ein abgetastetes Feld entlang der Linie</translation>
+    </message>
+    <message>
+        <source>Expor&amp;t report…</source>
+        <translation>Bericht expor&amp;tieren…</translation>
+    </message>
+    <message>
+        <source>Write a lab report of the experiment: parameters, run, scene, plots, readouts</source>
+        <translation>Einen Laborbericht des Experiments schreiben: Parameter, Lauf, Szene, Diagramme, Messwerte</translation>
+    </message>
+    <message>
+        <source>Export report</source>
+        <translation>Bericht exportieren</translation>
+    </message>
+    <message>
+        <source>PDF (*.pdf);;Web page (*.html)</source>
+        <translation>PDF (*.pdf);;Webseite (*.html)</translation>
+    </message>
+    <message>
+        <source>Cannot write the report</source>
+        <translation>Der Bericht kann nicht geschrieben werden</translation>
+    </message>
+    <message>
+        <source>Record clip…</source>
+        <translation>Clip aufnehmen…</translation>
+    </message>
+    <message>
+        <source>Record a clip in simulated time (MP4, WebM or GIF); press again to stop</source>
+        <translation>Einen Clip in simulierter Zeit aufnehmen (MP4, WebM oder GIF); erneut drücken zum Beenden</translation>
+    </message>
+    <message>
+        <source>Record clip</source>
+        <translation>Clip aufnehmen</translation>
+    </message>
+    <message>
+        <source>MP4 video (*.mp4);;WebM video (*.webm);;GIF (*.gif)</source>
+        <translation>MP4-Video (*.mp4);;WebM-Video (*.webm);;GIF (*.gif)</translation>
+    </message>
+    <message>
+        <source>Cannot record</source>
+        <translation>Aufnahme nicht möglich</translation>
+    </message>
+    <message>
+        <source>Stop recording</source>
+        <translation>Aufnahme beenden</translation>
+    </message>
+    <message>
+        <source>● REC %1 s</source>
+        <translation>● REC %1 s</translation>
     </message>
 </context>
 <context>

@@ -5,10 +5,8 @@
 #include "ViewportCore.h"
 
 #include "FieldOverlay.h"
-#include "Palette.h"
-#include "ParticleSplat.h"
+#include "ScenePainter.h"
 #include "SimulationController.h"
-#include "ViewportAxes.h"
 #include "i18n/Translations.h"
 
 #include <QMouseEvent>
@@ -20,14 +18,10 @@
 namespace pl::ui {
 
 namespace {
-constexpr double kMarginPx = 14.0;
 constexpr double kNewObstacleFraction = 0.06; // radius of a clicked-in obstacle, of the shorter box side
 constexpr double kPistonGrabPx = 8.0;
 constexpr double kClickPx = 3.0; // a press and release closer than this is a click, not a rectangle
-constexpr double kPointRadiusPx = 2.0;
 const QColor kWalls(200, 205, 220);
-const QColor kObstacleFill(120, 128, 150);
-const QColor kObstacleHover(170, 178, 200);
 
 double distance(QPointF a, QPointF b) {
     return std::hypot(a.x() - b.x(), a.y() - b.y());
@@ -54,7 +48,7 @@ ViewportCore::ViewportCore(SimulationController* controller, QWidget* widget)
 void ViewportCore::beginPaint() {
     const Model* model = controller_->model();
     scene_ = !model ? SceneView{} : drawsGpuBuffers_ ? model->sceneViewSharingGpu() : model->sceneView();
-    transform_.fit(scene_, widget_->size(), kMarginPx);
+    transform_.fit(scene_, widget_->size(), kSceneMarginPx);
 }
 
 void ViewportCore::requestFrame() const {
@@ -304,65 +298,15 @@ void ViewportCore::paintField(QPainter& painter) const {
 }
 
 void ViewportCore::paintParticles(QPainter& painter) const {
-    if (!scene_.drawParticles) return;
-    if (splatsParticles(scene_)) {
-        const QRect area = transform_.toWidget(scene_.left, scene_.bottom, scene_.right, scene_.top)
-                               .normalized()
-                               .toAlignedRect()
-                               .intersected(widget_->rect());
-        painter.drawImage(area.topLeft(), splatParticles(scene_, transform_, area));
-        return;
-    }
-    painter.setPen(Qt::NoPen);
-    const double scale = transform_.scale();
-    for (std::size_t i = 0; i < scene_.size(); ++i) {
-        painter.setBrush(paletteColour(scene_.colours, scene_.value[i]));
-        const double r = scene_.radius[i] > 0 ? std::max(1.0, scale * scene_.radius[i]) : kPointRadiusPx;
-        painter.drawEllipse(transform_.toWidget(scene_.x[i], scene_.y[i]), r, r);
-    }
+    paintSceneParticles(painter, transform_, scene_, widget_->rect());
 }
 
 void ViewportCore::paintOverlay(QPainter& painter) const {
-    painter.setRenderHint(QPainter::Antialiasing);
-    const QRectF box = transform_.toWidget(scene_.left, scene_.bottom, scene_.right, scene_.top);
-    painter.setBrush(Qt::NoBrush);
-    if (scene_.drawBox) {
-        painter.setPen(QPen(kWalls, 1.5));
-        painter.drawRect(box);
-    }
-    if (!scene_.xLabel.empty() || !scene_.yLabel.empty()) paintAxes(painter, transform_, scene_, box);
-    if (!scene_.hint.empty()) {
-        // The write-up's faint instruction: large, bold, 20 % opaque, out of the way once there is fluid.
-        QFont font = painter.font();
-        font.setBold(true);
-        font.setPointSizeF(font.pointSizeF() * 2.2);
-        painter.save();
-        painter.setFont(font);
-        painter.setPen(QColor(255, 255, 255, 51));
-        painter.drawText(box, Qt::AlignCenter | Qt::TextWordWrap, coreText(scene_.hint));
-        painter.restore();
-    }
-    painter.save();
-    painter.setClipRect(box.normalized()); // a body on a symmetry plane shows its half inside the domain
-    for (std::size_t i = 0; i < scene_.obstacles.size(); ++i) {
-        const Obstacle& o = scene_.obstacles[i];
-        const bool active = hovered_ == i || (gesture_ == Gesture::DragObstacle && grabbed_ == i);
-        painter.setPen(QPen(kWalls, active ? 2.0 : 1.0));
-        painter.setBrush(active ? kObstacleHover : kObstacleFill);
-        if (o.shape == Obstacle::Shape::Disc)
-            painter.drawEllipse(transform_.toWidget(o.x, o.y), transform_.scale() * o.radius,
-                                transform_.scale() * o.radius);
-        else
-            painter.drawRect(transform_.toWidget(o.x - o.halfWidth, o.y - o.halfHeight, o.x + o.halfWidth,
-                                                 o.y + o.halfHeight));
-    }
-    painter.restore();
+    std::optional<std::size_t> active = hovered_;
+    if (gesture_ == Gesture::DragObstacle) active = grabbed_;
+    paintSceneBodies(painter, transform_, scene_, active);
     paintSteeredTarget(painter);
-    if (scene_.pistonX) {
-        const double x = transform_.toWidget(*scene_.pistonX, 0).x();
-        painter.setPen(QPen(kWalls, gesture_ == Gesture::DragPiston ? 6 : 4));
-        painter.drawLine(QPointF(x, box.top()), QPointF(x, box.bottom()));
-    }
+    paintScenePiston(painter, transform_, scene_, gesture_ == Gesture::DragPiston);
     if (gesture_ == Gesture::Rectangle || gesture_ == Gesture::Pour) { // the write-up's spawn preview
         painter.setPen(QPen(QColor(255, 255, 255, 200), 1, Qt::DashLine));
         painter.setBrush(tool_ == ViewportTool::Spawn || gesture_ == Gesture::Pour

@@ -1,0 +1,378 @@
+// particlelab-cli record and the app's recorder, checked by decoding what it wrote: ffprobe for the codec,
+// frame count, size and duration; libavcodec in this test for a frame of MP4 and WebM against the off-screen
+// render of the same state (PSNR); the GIF's frame count and loop; a SIGINT leaves a clip with the frames so
+// far; bad options are refused with exit 2 before anything is written.
+#include "CliRunner.h"
+
+#include "SimulationController.h"
+#include "catalog/ModelCatalog.h"
+#include "record/AppRecorder.h"
+#include "record/ClipFrames.h"
+#include "viewport/ScenePainter.h"
+
+extern "C" {
+#include <libavcodec/avcodec.h>
+#include <libavformat/avformat.h>
+#include <libswscale/swscale.h>
+}
+
+#include <QElapsedTimer>
+#include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+#include <QtTest>
+
+#include <cmath>
+#include <csignal>
+#include <unistd.h>
+
+using pl::test::runCli;
+using pl::test::runProgram;
+
+namespace {
+
+constexpr int kFps = 10;
+constexpr int kSteps = 10;    // --steps-per-frame
+const QSize kSize(1280, 720); // the default size
+// YUV → RGB as a player does it well: chroma interpolated to full resolution, exact rounding.
+constexpr int kDecodeFlags = SWS_BICUBIC | SWS_FULL_CHR_H_INT | SWS_ACCURATE_RND;
+
+struct Probe {
+    QString codec;
+    int width = 0, height = 0;
+    long long frames = -1;
+    double duration = -1; // [s]
+};
+
+Probe ffprobe(const QString& path) {
+    const auto r = runProgram(
+        "ffprobe", {"-v", "error", "-count_frames", "-select_streams", "v:0", "-show_entries",
+                    "stream=codec_name,width,height,nb_read_frames:format=duration", "-of", "json", path});
+    Probe p;
+    const QJsonObject root = QJsonDocument::fromJson(r.out.toUtf8()).object();
+    const QJsonObject stream = root["streams"].toArray().at(0).toObject();
+    p.codec = stream["codec_name"].toString();
+    p.width = stream["width"].toInt();
+    p.height = stream["height"].toInt();
+    p.frames = stream["nb_read_frames"].toString("-1").toLongLong();
+    p.duration = root["format"].toObject()["duration"].toString("-1").toDouble();
+    return p;
+}
+
+// Frame `index` of the clip, decoded by libavcodec and converted to RGB32.
+QImage decodeFrame(const QString& path, int index) {
+    AVFormatContext* format = nullptr;
+    if (avformat_open_input(&format, path.toUtf8().constData(), nullptr, nullptr) < 0) return {};
+    avformat_find_stream_info(format, nullptr);
+    const int stream = av_find_best_stream(format, AVMEDIA_TYPE_VIDEO, -1, -1, nullptr, 0);
+    const AVCodec* codec = avcodec_find_decoder(format->streams[stream]->codecpar->codec_id);
+    AVCodecContext* context = avcodec_alloc_context3(codec);
+    avcodec_parameters_to_context(context, format->streams[stream]->codecpar);
+    avcodec_open2(context, codec, nullptr);
+    AVPacket* packet = av_packet_alloc();
+    AVFrame* frame = av_frame_alloc();
+    QImage image;
+    int seen = 0;
+    auto drain = [&] {
+        while (image.isNull() && avcodec_receive_frame(context, frame) == 0) {
+            if (seen++ != index) continue;
+            image = QImage(frame->width, frame->height, QImage::Format_RGB32);
+            SwsContext* sws = sws_getContext(
+                frame->width, frame->height, static_cast<AVPixelFormat>(frame->format), frame->width,
+                frame->height, AV_PIX_FMT_RGB32, kDecodeFlags, nullptr, nullptr, nullptr);
+            uint8_t* out[1] = {image.bits()};
+            const int stride[1] = {static_cast<int>(image.bytesPerLine())};
+            sws_scale(sws, frame->data, frame->linesize, 0, frame->height, out, stride);
+            sws_freeContext(sws);
+        }
+    };
+    while (image.isNull() && av_read_frame(format, packet) >= 0) {
+        if (packet->stream_index == stream) avcodec_send_packet(context, packet);
+        av_packet_unref(packet);
+        drain();
+    }
+    avcodec_send_packet(context, nullptr);
+    drain();
+    av_frame_free(&frame);
+    av_packet_free(&packet);
+    avcodec_free_context(&context);
+    avformat_close_input(&format);
+    return image;
+}
+
+// The picture through 4:2:0 and back without an encoder: what chroma subsampling alone costs.
+QImage throughYuv420(const QImage& rgb) {
+    const int w = rgb.width(), h = rgb.height();
+    AVFrame* yuv = av_frame_alloc();
+    yuv->format = AV_PIX_FMT_YUV420P;
+    yuv->width = w;
+    yuv->height = h;
+    av_frame_get_buffer(yuv, 0);
+    SwsContext* in = sws_getContext(w, h, AV_PIX_FMT_RGB32, w, h, AV_PIX_FMT_YUV420P, SWS_BICUBIC, nullptr,
+                                    nullptr, nullptr);
+    const uint8_t* src[1] = {rgb.constBits()};
+    const int srcStride[1] = {static_cast<int>(rgb.bytesPerLine())};
+    sws_scale(in, src, srcStride, 0, h, yuv->data, yuv->linesize);
+    QImage out(w, h, QImage::Format_RGB32);
+    SwsContext* back = sws_getContext(w, h, AV_PIX_FMT_YUV420P, w, h, AV_PIX_FMT_RGB32, kDecodeFlags, nullptr,
+                                      nullptr, nullptr);
+    uint8_t* dst[1] = {out.bits()};
+    const int dstStride[1] = {static_cast<int>(out.bytesPerLine())};
+    sws_scale(back, yuv->data, yuv->linesize, 0, h, dst, dstStride);
+    sws_freeContext(in);
+    sws_freeContext(back);
+    av_frame_free(&yuv);
+    return out;
+}
+
+// Peak signal-to-noise ratio of b against a over the three colour channels [dB].
+double psnr(const QImage& a, const QImage& b) {
+    double sum = 0;
+    for (int y = 0; y < a.height(); ++y) {
+        const auto* pa = reinterpret_cast<const QRgb*>(a.constScanLine(y));
+        const auto* pb = reinterpret_cast<const QRgb*>(b.constScanLine(y));
+        for (int x = 0; x < a.width(); ++x) {
+            const double dr = qRed(pa[x]) - qRed(pb[x]), dg = qGreen(pa[x]) - qGreen(pb[x]),
+                         db = qBlue(pa[x]) - qBlue(pb[x]);
+            sum += dr * dr + dg * dg + db * db;
+        }
+    }
+    const double mse = sum / (3.0 * a.width() * a.height());
+    return mse > 0 ? 10 * std::log10(255.0 * 255.0 / mse) : 99.0;
+}
+
+// The scene after `steps` steps of the preset, drawn off screen as the recording draws it bare.
+std::unique_ptr<pl::Model> stateAfter(const QString& preset, long long steps) {
+    auto model = pl::createModel("gas");
+    model->reset(pl::loadPreset(preset.toStdString()));
+    for (long long s = 0; s < steps; ++s) model->step();
+    return model;
+}
+
+QImage renderedState(const QString& preset, long long steps) {
+    return pl::ui::renderScene(stateAfter(preset, steps)->sceneView(), kSize);
+}
+
+// The recording of the tests; `changed` replaces options of the same name ("--size", "321x240").
+QStringList recordArgs(const QString& out, double seconds = 1.0, const QStringList& changed = {}) {
+    QStringList args{"record",
+                     "gas-classroom",
+                     "--out",
+                     out,
+                     "--seconds",
+                     QString::number(seconds),
+                     "--fps",
+                     QString::number(kFps),
+                     "--steps-per-frame",
+                     QString::number(kSteps),
+                     "--size",
+                     QStringLiteral("%1x%2").arg(kSize.width()).arg(kSize.height()),
+                     "--backend",
+                     "cpu",
+                     "--quiet"};
+    for (int i = 0; i + 1 < changed.size(); i += 2) {
+        const qsizetype at = args.indexOf(changed[i]);
+        if (at >= 0)
+            args[at + 1] = changed[i + 1];
+        else
+            args << changed[i] << changed[i + 1];
+    }
+    return args;
+}
+
+} // namespace
+
+class TestRecord : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase() {
+        if (QStandardPaths::findExecutable("ffprobe").isEmpty())
+            QSKIP("ffprobe (Debian's ffmpeg package) is needed to read the clips back");
+    }
+
+    void clipsHaveTheirCodecFramesSizeAndDuration_data() {
+        QTest::addColumn<QString>("suffix");
+        QTest::addColumn<QString>("codec");
+        QTest::newRow("mp4") << "mp4"
+                             << "h264";
+        QTest::newRow("webm") << "webm"
+                              << "vp9";
+        QTest::newRow("gif") << "gif"
+                             << "gif";
+    }
+    void clipsHaveTheirCodecFramesSizeAndDuration() {
+        QFETCH(QString, suffix);
+        QFETCH(QString, codec);
+        QTemporaryDir dir;
+        const QString out = dir.filePath("clip." + suffix);
+        const auto r = runCli(recordArgs(out, 2.0));
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        const Probe p = ffprobe(out);
+        QCOMPARE(p.codec, codec);
+        QCOMPARE(p.frames, 2LL * kFps);
+        QCOMPARE(QSize(p.width, p.height), kSize);
+        // GIF delays are whole centiseconds: 10 frames/s is exact there too.
+        QVERIFY2(std::abs(p.duration - 2.0) < 0.05, qPrintable(QString::number(p.duration)));
+    }
+
+    // A decoded frame is the off-screen render of the state after frame × steps-per-frame steps.
+    void decodedFrameMatchesTheRenderedState_data() {
+        QTest::addColumn<QString>("suffix");
+        QTest::newRow("mp4") << "mp4";
+        QTest::newRow("webm") << "webm";
+    }
+    void decodedFrameMatchesTheRenderedState() {
+        QFETCH(QString, suffix);
+        QTemporaryDir dir;
+        const QString out = dir.filePath("clip." + suffix);
+        const auto r = runCli(recordArgs(out) + QStringList{"--no-captions"});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        constexpr int kFrame = 7;
+        const QImage decoded = decodeFrame(out, kFrame);
+        QCOMPARE(decoded.size(), kSize);
+        const QImage rendered = renderedState("gas-classroom", kFrame * kSteps);
+        const double db = psnr(rendered, decoded);
+        qInfo("%s frame %d: PSNR %.1f dB (4:2:0 alone: %.1f dB)", qPrintable(suffix), kFrame, db,
+              psnr(rendered, throughYuv420(rendered)));
+        QVERIFY2(db >= 35.0, qPrintable(QString::number(db)));
+        // Another state is far from it: the frame is this state, not any picture of the scene.
+        QVERIFY(psnr(renderedState("gas-classroom", (kFrame + 3) * kSteps), decoded) < db - 3.0);
+    }
+
+    // The app takes a frame after every 10 steps inside the stepping, so frames of 3 steps (which a clip
+    // frame falls inside of) still give the states after 0, 10, 20, … steps: the clip does not depend
+    // on the frame rate.
+    void appRecordingTakesAFrameEveryTenStepsWhateverTheFrameRate() {
+        QTemporaryDir dir;
+        const QString out = dir.filePath("app.mp4");
+        pl::ui::SimulationController controller;
+        controller.setBackend(pl::gl::Backend::Cpu);
+        QVERIFY(controller.load(pl::loadPreset("gas-classroom")).isEmpty());
+        controller.setStepsPerFrame(3);
+        pl::ui::AppRecorder recorder(&controller);
+        QVERIFY(recorder.start(out, "gas-classroom").isEmpty());
+        QVERIFY(recorder.isRecording());
+        for (int frame = 0; frame < 130; ++frame) controller.advanceFrame(); // 390 steps
+        recorder.stop();
+        QVERIFY(!recorder.isRecording());
+        QCOMPARE(recorder.frames(), 40LL); // after 0, 10, …, 390 steps
+        const Probe p = ffprobe(out);
+        QCOMPARE(p.codec, QString("h264"));
+        QCOMPARE(p.frames, 40LL);
+        QCOMPARE(QSize(p.width, p.height), pl::ui::kAppClipSize);
+        constexpr int kFrame = 35; // after the title's opening second
+        pl::ui::ClipLook look;
+        look.size = pl::ui::kAppClipSize;
+        look.fps = pl::ui::kAppClipFps;
+        look.title = "gas-classroom";
+        look.timeUnit = "T";
+        const auto model = stateAfter("gas-classroom", kFrame * pl::ui::kAppStepsPerClipFrame);
+        const QImage expected = pl::ui::clipFrame(look, model->sceneView(), model->time(), kFrame);
+        const double db = psnr(expected, decodeFrame(out, kFrame));
+        qInfo("app frame %d: PSNR %.1f dB", kFrame, db);
+        QVERIFY2(db >= 35.0, qPrintable(QString::number(db)));
+    }
+
+    void gifLoopsForEver() {
+        QTemporaryDir dir;
+        const QString out = dir.filePath("clip.gif");
+        QVERIFY(runCli(recordArgs(out)).exitCode == 0);
+        QFile file(out);
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        const QByteArray bytes = file.readAll();
+        const qsizetype at = bytes.indexOf("NETSCAPE2.0");
+        QVERIFY2(at > 0, "no looping extension");
+        QCOMPARE(bytes.mid(at + 11, 4), QByteArray("\x03\x01\x00\x00", 4)); // loop count 0: for ever
+        QCOMPARE(bytes.back(), '\x3b');                                     // the GIF trailer
+    }
+
+    void sigintLeavesAPlayableClipOfTheFramesSoFar_data() {
+        QTest::addColumn<QString>("suffix");
+        QTest::newRow("mp4") << "mp4";
+        QTest::newRow("webm") << "webm";
+    }
+    void sigintLeavesAPlayableClipOfTheFramesSoFar() {
+        QFETCH(QString, suffix);
+        QTemporaryDir dir;
+        const QString out = dir.filePath("clip." + suffix);
+        QProcess p;
+        QStringList args = recordArgs(out, 600.0);
+        args.removeAll("--quiet");
+        p.start(PARTICLELAB_CLI, args);
+        QVERIFY(p.waitForStarted());
+        QElapsedTimer clock;
+        clock.start();
+        while (QFileInfo(out).size() < 20000 && clock.elapsed() < 30000) QTest::qWait(50);
+        QVERIFY2(QFileInfo(out).size() >= 20000, "no frames were written while the recording went on");
+        ::kill(static_cast<pid_t>(p.processId()), SIGINT);
+        QVERIFY(p.waitForFinished(30000));
+        QCOMPARE(p.exitCode(), 130);
+        const QString err = QString::fromUtf8(p.readAllStandardError());
+        const QRegularExpression said("holds the (\\d+) frames");
+        const auto match = said.match(err);
+        QVERIFY2(match.hasMatch(), qPrintable(err));
+        const Probe probe = ffprobe(out);
+        QCOMPARE(probe.frames, match.captured(1).toLongLong());
+        QVERIFY(probe.frames > 0 && probe.frames < 600LL * kFps);
+    }
+
+    void badOptionsAreRefusedBeforeAnythingRuns_data() {
+        QTest::addColumn<QStringList>("options");
+        QTest::addColumn<QString>("out");
+        QTest::addColumn<QString>("message");
+        QTest::newRow("suffix") << QStringList{} << "clip.avi"
+                                << "needs the suffix of a clip format";
+        QTest::newRow("odd size") << QStringList{"--size", "1281x720"} << "clip.mp4"
+                                  << "odd side";
+        QTest::newRow("zero") << QStringList{"--size", "0x720"} << "clip.mp4"
+                              << "too small";
+        QTest::newRow("beyond 8K") << QStringList{"--size", "7682x4320"} << "clip.webm"
+                                   << "larger than 7680x4320";
+        QTest::newRow("not a size") << QStringList{"--size", "big"} << "clip.gif"
+                                    << "is not a size";
+        QTest::newRow("fps 0") << QStringList{"--fps", "0"} << "clip.mp4"
+                               << "--fps";
+        QTest::newRow("seconds") << QStringList{"--seconds", "-1"} << "clip.mp4"
+                                 << "--seconds";
+        QTest::newRow("fraction of a frame") << QStringList{"--seconds", "0.05"} << "clip.mp4"
+                                             << "whole number";
+        QTest::newRow("plot") << QStringList{"--plot", "noSuchPlot"} << "clip.mp4"
+                              << "is no plot of a gas scene";
+    }
+    void badOptionsAreRefusedBeforeAnythingRuns() {
+        QFETCH(QStringList, options);
+        QFETCH(QString, out);
+        QFETCH(QString, message);
+        QTemporaryDir dir;
+        const auto r = runCli(recordArgs(dir.filePath(out), 1.0, options));
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains(message), qPrintable(r.err));
+        QCOMPARE(r.err.count('\n'), 1); // one sentence
+        QVERIFY(!QFileInfo::exists(dir.filePath(out)));
+    }
+
+    void anInputIsNeverTheOutput() {
+        QTemporaryDir dir;
+        const QString preset = dir.filePath("mine.gif"); // a preset file, oddly named
+        QFile::copy(QString(PARTICLELAB_TEST_DATA) + "/../../resources/presets/gas/gas-classroom.json",
+                    preset);
+        QVERIFY(QFileInfo::exists(preset));
+        QStringList args = recordArgs(preset);
+        args[1] = preset;
+        const QByteArray before = [&] {
+            QFile f(preset);
+            return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+        }();
+        const auto r = runCli(args);
+        QCOMPARE(r.exitCode, 2);
+        QFile f(preset);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        QCOMPARE(f.readAll(), before);
+    }
+};
+
+QTEST_MAIN(TestRecord)
+#include "tst_record.moc"

@@ -1,0 +1,71 @@
+// MainWindow's recording and report: Simulation → Record clip (a checked tool-bar button while it
+// records, with the clip's length in the status bar) and File → Export report….
+#include "MainWindow.h"
+
+#include "ExperimentDocument.h"
+#include "SimulationController.h"
+#include "record/AppRecorder.h"
+#include "report/LabReport.h"
+
+#include <QFileDialog>
+#include <QLabel>
+#include <QMenu>
+#include <QMessageBox>
+#include <QStatusBar>
+#include <QToolBar>
+
+namespace pl::ui {
+
+void MainWindow::createReportAction(QMenu* file) {
+    QAction* report = file->addAction(tr("Expor&t report…"));
+    report->setObjectName("exportReportAction");
+    report->setStatusTip(tr("Write a lab report of the experiment: parameters, run, scene, plots, readouts"));
+    connect(report, &QAction::triggered, this, [this] {
+        const QString path = QFileDialog::getSaveFileName(
+            this, tr("Export report"), document_->title() + ".pdf", tr("PDF (*.pdf);;Web page (*.html)"));
+        if (path.isEmpty()) return;
+        const QString error =
+            exportLabReport(*controller_, document_->title(), document_->description(), path);
+        if (!error.isEmpty()) QMessageBox::critical(this, tr("Cannot write the report"), error);
+    });
+}
+
+void MainWindow::createRecordAction(QMenu* sim, QToolBar* bar) {
+    recorder_ = new AppRecorder(controller_, this);
+    recordAction_ = sim->addAction(tr("Record clip…"));
+    recordAction_->setObjectName("recordAction");
+    recordAction_->setCheckable(true);
+    recordAction_->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_R));
+    recordAction_->setIcon(style()->standardIcon(QStyle::SP_DialogNoButton));
+    recordAction_->setToolTip(tr("Record a clip in simulated time (MP4, WebM or GIF); press again to stop"));
+    bar->addAction(recordAction_);
+    recordingLabel_ = new QLabel(this);
+    recordingLabel_->setObjectName("recordingLabel");
+    recordingLabel_->setStyleSheet(QStringLiteral("color: #c0392b; font-weight: bold;"));
+    recordingLabel_->hide();
+    statusBar()->addPermanentWidget(recordingLabel_);
+    connect(recordAction_, &QAction::triggered, this, [this](bool on) {
+        if (!on) {
+            recorder_->stop();
+            return;
+        }
+        const QString path =
+            QFileDialog::getSaveFileName(this, tr("Record clip"), document_->title() + ".mp4",
+                                         tr("MP4 video (*.mp4);;WebM video (*.webm);;GIF (*.gif)"));
+        const QString error = path.isEmpty() ? QString() : recorder_->start(path, document_->title());
+        if (!error.isEmpty()) QMessageBox::critical(this, tr("Cannot record"), error);
+        recordAction_->setChecked(recorder_->isRecording());
+    });
+    connect(recorder_, &AppRecorder::recordingChanged, this, [this](bool on) {
+        recordAction_->setChecked(on);
+        recordAction_->setText(on ? tr("Stop recording") : tr("Record clip…"));
+        recordingLabel_->setVisible(on);
+        recordingLabel_->setText(tr("● REC %1 s").arg(0.0, 0, 'f', 1));
+    });
+    connect(recorder_, &AppRecorder::progressed, this,
+            [this](double seconds) { recordingLabel_->setText(tr("● REC %1 s").arg(seconds, 0, 'f', 1)); });
+    connect(recorder_, &AppRecorder::finished, this,
+            [this](const QString& sentence) { statusBar()->showMessage(sentence, 10000); });
+}
+
+} // namespace pl::ui
