@@ -23,6 +23,7 @@
 #include <QGuiApplication>
 #include <QImage>
 #include <QLabel>
+#include <QLocale>
 #include <QMenu>
 #include <QMessageBox>
 #include <QPainter>
@@ -51,6 +52,7 @@ MainWindow::MainWindow(QWidget* parent)
     createToolPalette();
     createDocks();
     status_ = new QLabel(this);
+    status_->setObjectName("statusLine");
     statusBar()->addPermanentWidget(status_);
     auto* statusTimer = new QTimer(this);
     connect(statusTimer, &QTimer::timeout, this, &MainWindow::updateStatus);
@@ -242,12 +244,17 @@ void MainWindow::updateStatus() {
                              .arg(model->stepCount()));
         return;
     }
-    status_->setText(tr("%1 particles   t = %2   step %3   %4 steps/s   %5 fps   %6")
-                         .arg(model->particleCount())
-                         .arg(model->time(), 0, 'g', 6)
-                         .arg(model->stepCount())
-                         .arg(controller_->stepsPerSecond(), 0, 'f', 0)
-                         .arg(viewportCore_->framesPerSecond(), 0, 'f', 0)
+    // The pace as the class sees it: steps a second and how much simulated time a second of the lesson
+    // shows.
+    const QLocale locale;
+    status_->setText(tr("%1 particles   t = %2   step %3   %4 steps/s (%5 %6 per second)   %7 fps   %8")
+                         .arg(locale.toString(static_cast<qulonglong>(model->particleCount())))
+                         .arg(locale.toString(model->time(), 'g', 6))
+                         .arg(locale.toString(static_cast<qlonglong>(model->stepCount())))
+                         .arg(locale.toString(controller_->stepsPerSecond(), 'f', 0))
+                         .arg(locale.toString(controller_->simulatedPerSecond(), 'g', 3))
+                         .arg(controller_->timeUnit())
+                         .arg(locale.toString(viewportCore_->framesPerSecond(), 'f', 0))
                          .arg(model->backend() == "gl" ? tr("GPU") : tr("CPU")));
 }
 

@@ -83,6 +83,7 @@ private:
     void createSceneBar();
     void createToolPalette();
     void syncGravity(); // the gravity action follows the model's "gravity_on" switch
+    void showPace();    // the pace box and the Auto action follow the controller
     void createDocks();
     QDockWidget* addDock(QWidget* content, const QString& title, const QString& objectName,
                          Qt::DockWidgetArea area, const QStringList& kinds = {});
@@ -108,6 +109,7 @@ private:
     QComboBox* scenePicker_ = nullptr;
     QComboBox* presetPicker_ = nullptr;
     QSpinBox* speed_ = nullptr;
+    QAction* autoPace_ = nullptr;
     QSlider* heat_ = nullptr;
     QAction* gravity_ = nullptr;
     QLabel* status_ = nullptr;

@@ -18,6 +18,7 @@
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QLabel>
+#include <QLocale>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QSlider>
@@ -118,16 +119,31 @@ void MainWindow::createActions() {
     runActions_ = {playAction_, step, reset};
     createRecordAction(sim, bar);
     bar->addSeparator();
+    // The pace: automatic (as many steps as half of each frame allows, up to the scene's watchable rate)
+    // or a fixed, signed number of steps per frame; the box shows the automatic pace's steps as it runs.
+    autoPace_ = menuAction(sim, tr("Automatic pace"), Qt::Key_A,
+                           tr("As many steps as half of each frame allows, up to a pace that keeps the "
+                              "scene watchable"));
+    autoPace_->setObjectName("autoPaceAction");
+    autoPace_->setIconText(tr("Auto"));
+    autoPace_->setCheckable(true);
+    connect(autoPace_, &QAction::triggered, controller_, [this](bool on) {
+        if (on)
+            controller_->setAutomaticPace();
+        else // fixed at the steps the automatic pace takes now
+            controller_->setStepsPerFrame(controller_->stepsPerFrame());
+    });
+    bar->addAction(autoPace_);
     bar->addWidget(new QLabel(tr(" Steps per frame "), bar));
     speed_ = new QSpinBox(bar);
     speed_->setObjectName("stepsPerFrame");
     speed_->setRange(-SimulationController::kMaxStepsPerFrame, SimulationController::kMaxStepsPerFrame);
-    speed_->setValue(controller_->stepsPerFrame());
-    speed_->setToolTip(tr("Signed speed: negative values run time backwards, 0 pauses ([ slower, ] faster)"));
+    speed_->setToolTip(tr("Signed steps per frame: negative values run time backwards, 0 stands still "
+                          "([ slower, ] faster); a number typed here fixes the pace"));
     connect(speed_, &QSpinBox::valueChanged, controller_, &SimulationController::setStepsPerFrame);
-    connect(controller_, &SimulationController::stepsPerFrameChanged, speed_, [this](int n) {
-        const QSignalBlocker block(speed_); // the controller may refuse a value (no reverse for DSMC)
-        speed_->setValue(n);
+    connect(controller_, &SimulationController::paceChanged, this, &MainWindow::showPace);
+    connect(controller_, &SimulationController::frameAdvanced, this, [this] {
+        if (controller_->automaticPace() && !speed_->hasFocus()) showPace();
     });
     bar->addWidget(speed_);
     QAction* slower = menuAction(sim, tr("Slower"), Qt::Key_BracketLeft, tr("One step per frame less"));
@@ -135,8 +151,9 @@ void MainWindow::createActions() {
     QAction* faster = menuAction(sim, tr("Faster"), Qt::Key_BracketRight, tr("One step per frame more"));
     connect(faster, &QAction::triggered, speed_, [this] { speed_->stepUp(); });
     QAction* reverse = menuAction(sim, tr("Reverse time"), Qt::Key_Backspace, tr("Run time the other way"));
-    connect(reverse, &QAction::triggered, speed_, [this] { speed_->setValue(-speed_->value()); });
-    runActions_ << slower << faster << reverse;
+    connect(reverse, &QAction::triggered, controller_, &SimulationController::reverse);
+    runActions_ << autoPace_ << slower << faster << reverse;
+    showPace();
 
     // Where the models compute: the factory in gl/Backends.h decides what "auto" means here.
     QMenu* backendMenu = sim->addMenu(tr("Compute &backend"));
@@ -269,9 +286,12 @@ void MainWindow::createToolPalette() {
     bar->addSeparator();
     bar->addWidget(new QLabel(tr(" Cool "), bar));
     heat_ = new QSlider(Qt::Horizontal, bar);
+    heat_->setObjectName("heatSlider");
     heat_->setRange(-100, 100);
     heat_->setFixedWidth(140);
-    heat_->setToolTip(tr("Hold to the right to heat, to the left to cool; it springs back when released"));
+    heat_->setToolTip(tr("Hold to the right to heat, to the left to cool, the faster the further (at the "
+                         "right end kT doubles in about 4 s of the scene's pace); it springs back when "
+                         "released"));
     connect(heat_, &QSlider::valueChanged, controller_,
             [this](int v) { controller_->setHeatRate(v / 100.0); });
     connect(heat_, &QSlider::sliderReleased, heat_, [this] { heat_->setValue(0); });
@@ -310,14 +330,40 @@ void MainWindow::createToolPalette() {
             &QAction::triggered, this, [drivePiston] { drivePiston(+1); });
 }
 
+void MainWindow::showPace() {
+    const QSignalBlocker block(speed_); // showing the pace is no choice of it
+    const bool automatic = controller_->automaticPace();
+    autoPace_->setChecked(automatic);
+    speed_->setPrefix(automatic ? tr("auto ") : QString());
+    // Before its first frame the automatic pace shows its direction.
+    const int n = controller_->stepsPerFrame();
+    speed_->setValue(automatic && n == 0 ? controller_->direction() : n);
+}
+
 void MainWindow::syncGravity() {
     const Model* model = controller_->model();
     const bool toggle = model && findSpec(model->paramSpecs(), "gravity_on");
     gravity_->setVisible(toggle);
-    gravity_->setEnabled(toggle && !controller_->isReadOnly());
     if (!toggle) return;
+    // The switch shows the gravity the disks feel: g, and off where the scene has g = 0 (then it is set
+    // in Parameters, and the switch waits for it).
+    const ParamValues values = model->params();
+    const auto strength = values.find("gravity");
+    const double g = strength == values.end() ? 1.0 : std::get<double>(strength->second);
+    const ParamSpec* spec = findSpec(model->paramSpecs(), "gravity");
+    const QString unit = spec ? translatedUnit(*spec) : QString();
     const QSignalBlocker block(gravity_);
-    gravity_->setChecked(std::get<bool>(model->params().at("gravity_on")));
+    gravity_->setChecked(g != 0 && std::get<bool>(values.at("gravity_on")));
+    gravity_->setEnabled(g != 0 && !controller_->isReadOnly());
+    gravity_->setIconText(g == 0 || strength == values.end()
+                              ? tr("Gravity")
+                              : tr("Gravity %1").arg(QLocale().toString(std::abs(g), 'g', 3)));
+    gravity_->setText(g == 0 || strength == values.end()
+                          ? tr("Gravity")
+                          : tr("Gravity (g = %1 %2)").arg(QLocale().toString(std::abs(g), 'g', 3), unit));
+    gravity_->setToolTip(g == 0 ? tr("This scene has no gravity (g = 0): set Gravity in Parameters")
+                                : tr("Switch gravity on or off (%1)")
+                                      .arg(gravity_->shortcut().toString(QKeySequence::NativeText)));
 }
 
 void MainWindow::fillPresetPicker() {

@@ -1,23 +1,39 @@
 // SimulationController: fixed-dt stepping driven by a frame timer, so the physics never depends on the
-// frame rate (a slow machine runs the same trajectory, only slower).
+// frame rate (a slow machine runs the same trajectory, only slower). The automatic pace chooses how many
+// of those steps a frame takes: as many as fit in a share of the frame, measured as it runs, up to the
+// scene's watchable rate of simulated time per wall second.
 #include "SimulationController.h"
 
 #include "FrameProfile.h"
 #include "ImportedRunModel.h"
+#include "ViewChooser.h"
+#include "catalog/ModelCatalog.h"
 #include "viewport/QtGlContext.h"
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace pl::ui {
 
 namespace {
 constexpr int kFrameIntervalMs = 16; // ~60 frames per second
 constexpr int kFramesPerSample = 3;  // ~20 rows per second for the plots
-// Relative kinetic-energy change per time step at rate ±1: heating acts per step of model time, so a
-// held slider warms the gas as much per simulated second at 1 as at 20 steps per frame (at the default
-// 5 steps per frame, 3 % a frame).
-constexpr double kHeatPerStepAtFull = 0.006;
+// Automatic pace: the most steps one frame takes (a GPU queues steps faster than it runs them, so the
+// measured cost per step, not the clock inside the loop, bounds it there), and the most wall time [s] of
+// watchable simulated time a frame may catch up after a slow one, so a stall never turns into a burst.
+constexpr int kMaxAutomaticSteps = 20000;
+constexpr double kMaxCatchUpSeconds = 0.05;
+constexpr double kCostSmoothing = 0.25; // weight of the newest frame in the cost per step
+constexpr double kNanosecondsPerMs = 1e6;
+// The steps always get this much of a frame: where the paint alone misses frames, fewer steps would not
+// bring them back, only slow the scene down.
+constexpr double kMinStepBudgetMs = 4.0;
+// A frame shown later than 1.5 frame intervals after the previous one was missed (a timer tick went by
+// without a frame); each missed frame takes 20 % off the steps' share, each frame on time gives back
+// 1 %: the pace settles where about one frame in twenty is missed, above 55 frames per second.
+constexpr double kMissedFrameMs = 1.5 * kFrameIntervalMs;
+constexpr double kBudgetDecrease = 0.8, kBudgetIncrease = 1.01;
 } // namespace
 
 SimulationController::SimulationController(QObject* parent) : QObject(parent) {
@@ -45,10 +61,18 @@ void SimulationController::adopt(std::unique_ptr<Model> model) {
     if (const std::string warning = model_->accuracyWarning(); !warning.empty())
         emit notice(tr("Warning: %1").arg(QString::fromStdString(warning)));
     pending_.clear();
-    if (stepsPerFrame_ < 0 && !model_->reversible()) setStepsPerFrame(-stepsPerFrame_);
+    applied_ = model_->params();
+    // The pace belongs to the scene: a new one starts automatic and forward, whatever the last one ran at.
+    automatic_ = true;
+    direction_ = 1;
+    lastFrameSteps_ = 0;
+    nanosecondsPerStep_ = 0.0;
+    allowance_ = 0.0;
+    stepBudgetMs_ = kStepShareOfFrameMs;
     applyDirection();
     restartSeries();
     emit modelReplaced();
+    emit paceChanged();
 }
 
 void SimulationController::showImported(std::unique_ptr<Model> model, TimeSeries series,
@@ -99,11 +123,19 @@ QString SimulationController::setParameters(const ParamValues& values) {
     } catch (const std::exception& e) {
         return QString::fromStdString(e.what());
     }
+    // A value set back to the one the state was built with waits for nothing.
     for (const auto& [key, value] : values) {
         const ParamSpec* spec = findSpec(model_->paramSpecs(), key);
-        if (spec && !spec->appliesLive) pending_[key] = value;
+        if (!spec || spec->appliesLive) continue;
+        const auto applied = applied_.find(key);
+        if (applied != applied_.end() && applied->second == value)
+            pending_.erase(key);
+        else
+            pending_[key] = value;
     }
-    noteEdited();
+    // Show (the `view` of a scene with sampled fields) chooses what is drawn, not the experiment.
+    const bool viewOnly = values.size() == 1 && values.begin()->first == ViewChooser::kKey;
+    if (!viewOnly) noteEdited();
     emit parametersChanged();
     return {};
 }
@@ -202,6 +234,10 @@ void SimulationController::play() {
     }
     rateClock_.start();
     stepsSinceClock_ = 0;
+    simulatedSinceClock_ = 0.0;
+    frameClock_.invalidate();
+    shownClock_.invalidate();
+    allowance_ = 0.0;
     timer_.start();
     emit runningChanged(true);
 }
@@ -237,6 +273,7 @@ void SimulationController::reset() {
     if (!model_ || isReadOnly()) return;
     model_->reset();
     pending_.clear();
+    applied_ = model_->params();
     applyDirection();
     restartSeries();
     emit parametersChanged();
@@ -244,25 +281,58 @@ void SimulationController::reset() {
 }
 
 void SimulationController::setStepsPerFrame(int n) {
-    stepsPerFrame_ = std::clamp(n, -kMaxStepsPerFrame, kMaxStepsPerFrame);
-    if (stepsPerFrame_ < 0 && model_ && !model_->reversible()) {
-        stepsPerFrame_ = 0;
+    n = std::clamp(n, -kMaxStepsPerFrame, kMaxStepsPerFrame);
+    if (n < 0 && model_ && !model_->reversible()) {
+        n = 0;
         emit notice(
             tr("This scene cannot run backwards: its collisions are random, so time has one direction."));
     }
+    automatic_ = false;
+    fixedSteps_ = std::abs(n);
+    if (n != 0) direction_ = n > 0 ? 1 : -1;
     applyDirection();
-    emit stepsPerFrameChanged(stepsPerFrame_);
+    emit paceChanged();
+}
+
+void SimulationController::setAutomaticPace() {
+    automatic_ = true;
+    emit paceChanged();
+}
+
+void SimulationController::reverse() {
+    if (model_ && !model_->reversible() && direction_ > 0) {
+        emit notice(
+            tr("This scene cannot run backwards: its collisions are random, so time has one direction."));
+        return;
+    }
+    direction_ = -direction_;
+    applyDirection();
+    emit paceChanged();
 }
 
 void SimulationController::setHeatRate(double rate) {
     heatRate_ = std::clamp(rate, -1.0, 1.0);
 }
 
+double SimulationController::watchableRate() const {
+    const ModelDescriptor* kind = model_ ? findModel(model_->kind()) : nullptr;
+    return kind ? kind->watchableRate : 0.0;
+}
+
+QString SimulationController::timeUnit() const {
+    const ModelDescriptor* kind = model_ ? findModel(model_->kind()) : nullptr;
+    return kind ? QString::fromStdString(kind->units.time) : QString();
+}
+
+double SimulationController::heatRatePerTime() const {
+    const double rate = watchableRate();
+    return rate > 0 ? std::log(2.0) / (kHeatDoublingSeconds * rate) : 0.0;
+}
+
 void SimulationController::applyDirection() {
-    if (!model_ || isReadOnly() || stepsPerFrame_ == 0) return;
-    const int direction = stepsPerFrame_ > 0 ? 1 : -1;
-    if (direction < 0 && !model_->reversible()) return; // setStepsPerFrame() refused it already
-    if (model_->timeDirection() != direction) model_->setTimeDirection(direction);
+    if (!model_ || isReadOnly()) return;
+    if (direction_ < 0 && !model_->reversible()) direction_ = 1; // a new scene that cannot run back
+    if (model_->timeDirection() != direction_) model_->setTimeDirection(direction_);
 }
 
 void SimulationController::restartSeries() {
@@ -277,24 +347,93 @@ void SimulationController::sample() {
     if (!model_->failure()) series_.append(model_->sampleSeries());
 }
 
+int SimulationController::stepsThisFrame() {
+    if (!automatic_) {
+        lastFrameSteps_ = fixedSteps_;
+        return fixedSteps_;
+    }
+    // The watchable rate's simulated time since the last frame, plus what a short frame left over.
+    // A frame asked for while time stands (a test, --screenshot) counts as one frame interval.
+    const double rate = watchableRate();
+    const bool timed = isRunning() && frameClock_.isValid();
+    const double wall =
+        timed ? static_cast<double>(frameClock_.restart()) / 1000.0 : kFrameIntervalMs / 1000.0;
+    if (isRunning() && !timed) frameClock_.start();
+    allowance_ = rate > 0 ? std::min(allowance_ + rate * wall, rate * kMaxCatchUpSeconds)
+                          : std::numeric_limits<double>::infinity(); // a kind without a rate: the share alone
+    // The share of the frame at the cost per step measured so far (the loop also watches the clock).
+    if (nanosecondsPerStep_ <= 0) return 1; // the first frame measures
+    return static_cast<int>(std::clamp(stepBudgetMs_ * kNanosecondsPerMs / nanosecondsPerStep_ * 4.0, 1.0,
+                                       static_cast<double>(kMaxAutomaticSteps)));
+}
+
+void SimulationController::frameShown() {
+    if (!isRunning()) {
+        shownClock_.invalidate();
+        return;
+    }
+    const bool measured = shownClock_.isValid();
+    const double interval =
+        measured ? static_cast<double>(shownClock_.nsecsElapsed()) / kNanosecondsPerMs : 0.0;
+    shownClock_.start();
+    if (!measured) return;
+    // Multiplicative decrease when a frame was missed, slow recovery up to the share: the frame rate stays
+    // near 60 while the steps take what the paint leaves.
+    if (interval > kMissedFrameMs)
+        stepBudgetMs_ = std::max(kMinStepBudgetMs, stepBudgetMs_ * kBudgetDecrease);
+    else
+        stepBudgetMs_ = std::min(kStepShareOfFrameMs, stepBudgetMs_ * kBudgetIncrease);
+}
+
+void SimulationController::noteFrameCost(int steps, qint64 nanoseconds) {
+    if (steps <= 0) return;
+    const double perStep = static_cast<double>(nanoseconds) / steps;
+    nanosecondsPerStep_ = nanosecondsPerStep_ <= 0
+                              ? perStep
+                              : (1 - kCostSmoothing) * nanosecondsPerStep_ + kCostSmoothing * perStep;
+}
+
 void SimulationController::advanceFrame() {
     if (!model_ || isReadOnly()) return;
-    int steps = std::abs(stepsPerFrame_);
+    int limit = stepsThisFrame();
     if (model_->plannedSteps() > 0)
-        steps = static_cast<int>(
-            std::clamp<std::int64_t>(model_->plannedSteps() - model_->stepCount(), 0, steps));
-    // The frame's steps of heating at once: one O(N) rescale a frame instead of one a step.
-    if (heatRate_ != 0.0 && steps > 0 && model_->tools() && model_->particleCount() > 0)
-        model_->tools()->scaleKineticEnergy(std::exp(kHeatPerStepAtFull * heatRate_ * steps));
+        limit = static_cast<int>(
+            std::clamp<std::int64_t>(model_->plannedSteps() - model_->stepCount(), 0, limit));
+    const double startTime = model_->time();
+    int steps = 0;
     {
         const FramePartTimer timer(FramePart::Step);
-        for (int s = 0; s < steps && !model_->failure(); ++s) stepModel();
+        QElapsedTimer clock;
+        clock.start();
+        const qint64 budget = static_cast<qint64>(stepBudgetMs_ * kNanosecondsPerMs);
+        if (automatic_) {
+            while (steps < limit && !model_->failure() && std::abs(model_->time() - startTime) < allowance_ &&
+                   clock.nsecsElapsed() < budget) {
+                stepModel();
+                ++steps;
+            }
+            model_->finishPendingWork(); // a GPU's queued steps count in the cost they took
+            noteFrameCost(steps, clock.nsecsElapsed());
+            lastFrameSteps_ = steps;
+        } else {
+            for (; steps < limit && !model_->failure(); ++steps) stepModel();
+        }
     }
+    const double simulated = std::abs(model_->time() - startTime);
+
+    if (automatic_ && std::isfinite(allowance_)) allowance_ -= simulated;
+    // Heating acts per simulated time: one O(N) rescale a frame for the frame's steps.
+    if (heatRate_ != 0.0 && simulated > 0 && model_->tools() && model_->particleCount() > 0 &&
+        !model_->failure())
+        model_->tools()->scaleKineticEnergy(std::exp(heatRatePerTime() * heatRate_ * simulated));
     stepsSinceClock_ += steps;
+    simulatedSinceClock_ += simulated;
     if (rateClock_.isValid() && rateClock_.elapsed() > 500) {
-        stepsPerSecond_ =
-            1000.0 * static_cast<double>(stepsSinceClock_) / static_cast<double>(rateClock_.restart());
+        const double seconds = static_cast<double>(rateClock_.restart()) / 1000.0;
+        stepsPerSecond_ = static_cast<double>(stepsSinceClock_) / seconds;
+        simulatedPerSecond_ = simulatedSinceClock_ / seconds;
         stepsSinceClock_ = 0;
+        simulatedSinceClock_ = 0.0;
     }
     if (steps > 0 && ++framesSinceSample_ >= kFramesPerSample) {
         framesSinceSample_ = 0;

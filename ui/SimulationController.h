@@ -1,6 +1,7 @@
-// Owns the model and time: play / pause / single step / reset, signed steps per frame (negative runs
-// time backwards through the model's direction of time), a frame timer, the heat / cool control,
-// blow-up handling, and the time-series store the plots read. Views only read from it; every edit of
+// Owns the model and time: play / pause / single step / reset, the pace (automatic: as many steps as a
+// share of each frame's time allows, up to the scene's watchable rate; or a fixed, signed number of steps
+// per frame), the direction of time, a frame timer, the heat / cool control, blow-up handling, and the
+// time-series store the plots read. Views only read from it; every edit of
 // the model (parameters, the mouse tools, heat / cool) goes through it, so the document knows it is
 // modified and one rule holds in every scene.
 #pragma once
@@ -21,8 +22,15 @@ class SimulationController : public QObject {
     Q_OBJECT
 public:
     explicit SimulationController(QObject* parent = nullptr);
-    // The write-up's speed slider went to 10; 20 lets a slow machine keep up with a fast one's model time.
-    static constexpr int kMaxStepsPerFrame = 20;
+    // The largest fixed pace: a fast machine's automatic pace in the lightest scenes stays below it.
+    static constexpr int kMaxStepsPerFrame = 1000;
+    // Automatic pace: the model steps for at most this much of each frame [ms] (half of a 60 Hz frame),
+    // so the viewport and the plots keep the rest; less where frames are missed (a slow paint, another
+    // program on the cores).
+    static constexpr double kStepShareOfFrameMs = 8.3;
+    // Full Heat (or Cool) at the scene's watchable pace changes kT by a factor 2 in this many seconds of
+    // wall time; the rate itself is per simulated time (heatRatePerTime()).
+    static constexpr double kHeatDoublingSeconds = 4.0;
 
     // Loads a preset, and with a snapshot's state continues from it. On error the current experiment is
     // kept and the message returned; empty on success.
@@ -43,8 +51,23 @@ public:
     Model* model() const { return model_.get(); }
     SeriesStore* series() { return &series_; }
     bool isRunning() const { return timer_.isActive(); }
-    int stepsPerFrame() const { return stepsPerFrame_; }
+    // The pace. Automatic (the default of every scene): each frame steps for up to kStepShareOfFrameMs,
+    // never faster than the scene's watchable rate (ModelDescriptor::watchableRate). Fixed: |n| steps a
+    // frame. Both run in direction() (−1: time backwards, where the scene is reversible).
+    bool automaticPace() const { return automatic_; }
+    int direction() const { return direction_; }
+    // Signed steps per frame: the fixed number, or in automatic pace the last frame's steps (0 until the
+    // first frame ran).
+    int stepsPerFrame() const { return automatic_ ? direction_ * lastFrameSteps_ : direction_ * fixedSteps_; }
     double stepsPerSecond() const { return stepsPerSecond_; }
+    // Simulated time per second of wall time, measured [the kind's time unit / s].
+    double simulatedPerSecond() const { return simulatedPerSecond_; }
+    // The scene's watchable rate [time unit / s] and the time unit, from its registration.
+    double watchableRate() const;
+    QString timeUnit() const;
+    // Relative change of kT per simulated time at full Heat [1 / time unit]: ln 2 over kHeatDoublingSeconds
+    // of the watchable rate's simulated time, so the gas warms as much per simulated second at any pace.
+    double heatRatePerTime() const;
 
     // Calls atStep after every step whose count is a multiple of `every` (0: none), before the frame is
     // shown: a recording's frames are states after a fixed number of steps, whatever the frame rate.
@@ -81,14 +104,23 @@ public slots:
     void togglePlay();
     void stepOnce();
     void reset();
-    // −20 … 20: |n| steps per frame, the sign chooses the direction of time.
+    // A fixed pace: |n| ≤ kMaxStepsPerFrame steps per frame, the sign chooses the direction of time
+    // (0: time stands while running).
     void setStepsPerFrame(int n);
-    // −1 (cool) … 1 (heat): kinetic energy changes by up to ±0.6 % per time step while it is non-zero.
+    // The automatic pace, in the present direction of time.
+    void setAutomaticPace();
+    // Runs time the other way, keeping the pace (refused, with a notice, where the scene is not reversible).
+    void reverse();
+    // −1 (cool) … 1 (heat), proportional: kT changes by exp(rate × heatRatePerTime() × simulated time)
+    // while it is non-zero.
     void setHeatRate(double rate);
     // Advances one frame's worth of steps and notifies views (the timer calls it; tests may too).
     void advanceFrame();
     // Appends one row of the model's observables to the series store.
     void sample();
+    // The viewport showed a frame: the automatic pace measures the time between frames shown and gives
+    // the steps less of a frame where frames are missed.
+    void frameShown();
 
 signals:
     void modelReplaced();
@@ -97,11 +129,13 @@ signals:
     void failed(const QString& message);
     void edited();
     void parametersChanged();
-    void stepsPerFrameChanged(int n);
+    void paceChanged();                  // automatic or fixed, the fixed number or the direction
     void notice(const QString& message); // one line for the status bar
 
 private:
-    void applyDirection(); // the sign of stepsPerFrame_ as the model's direction of time
+    void applyDirection(); // direction_ as the model's direction of time
+    int stepsThisFrame();  // the pace's steps for the frame about to run
+    void noteFrameCost(int steps, qint64 nanoseconds);
     // The model's tools when the user may edit them now.
     SceneTools* editableTools();
     void restartSeries();
@@ -112,16 +146,29 @@ private:
     gl::Backend backend_ = gl::Backend::Auto;
     SeriesStore series_;
     ParamValues pending_;
+    ParamValues applied_;  // the values the state was last built with (load, reset)
     QString importedFrom_; // empty while the model is ours to run
     QTimer timer_;
-    int stepsPerFrame_ = 5;
+    bool automatic_ = true;
+    int direction_ = 1;
+    int fixedSteps_ = 5;
+    int lastFrameSteps_ = 0;
     double heatRate_ = 0.0;
     double stepsPerSecond_ = 0.0;
+    double simulatedPerSecond_ = 0.0;
     int framesSinceSample_ = 0;
     QElapsedTimer rateClock_;
     long long stepsSinceClock_ = 0;
     int watchEvery_ = 0;
     std::function<void()> watch_;
+    double simulatedSinceClock_ = 0.0;
+    // Automatic pace: the wall clock between frames, the simulated time the watchable rate still allows,
+    // and the measured cost of one step [ns] (0 until measured).
+    QElapsedTimer frameClock_;
+    double allowance_ = 0.0;
+    double nanosecondsPerStep_ = 0.0;
+    double stepBudgetMs_ = kStepShareOfFrameMs;
+    QElapsedTimer shownClock_; // between frames shown while running
 };
 
 } // namespace pl::ui

@@ -34,10 +34,12 @@ const std::vector<std::reference_wrapper<const ModelDescriptor>>& modelCatalog()
 }
 
 void registerModel(const ModelDescriptor& descriptor) {
-    if (descriptor.kind.empty() || descriptor.units.name.empty() || !descriptor.specs || !descriptor.create ||
+    if (descriptor.kind.empty() || descriptor.units.name.empty() || descriptor.units.time.empty() ||
+        !(descriptor.watchableRate > 0) || !descriptor.specs || !descriptor.create ||
         !descriptor.particleCount)
         throw std::invalid_argument(
-            "a model kind needs a name, its units, parameter specs, a creator and a particle count");
+            "a model kind needs a name, its units and unit of time, a watchable rate, parameter specs, a "
+            "creator and a particle count");
     if (findModel(descriptor.kind))
         throw std::invalid_argument("the model kind '" + descriptor.kind + "' is registered already");
     registeredKinds().push_back(descriptor);

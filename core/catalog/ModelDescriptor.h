@@ -50,6 +50,7 @@ struct PlotSpec {
 struct UnitSystem {
     std::string name;    // short, for a line or a column: "reduced (L, T, M)", "SI"
     std::string summary; // each quantity and its unit: "length L, time T, mass M; energies and kT in M·L²/T²"
+    std::string time;    // the unit of time, as the status bar writes it: "T", "s"
 };
 
 struct ModelDescriptor {
@@ -67,6 +68,10 @@ struct ModelDescriptor {
     std::vector<PlotSpec> plots;
     // The distribution docks that apply, by the UI's dock name: "speedHistogram", "vxHistogram".
     std::vector<std::string> distributions;
+    // The fastest the app runs the kind's scenes [units.time of simulated time per second of wall time]:
+    // the motion stays watchable on a fast machine (a slow one runs slower). The app's automatic pace
+    // steps up to it, and Heat / Cool are a rate per simulated time derived from it (docs/gas.md).
+    double watchableRate = 0.0;
 };
 
 // Colours the plot specs share, so the scenes' docks read alike.

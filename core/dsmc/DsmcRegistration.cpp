@@ -10,7 +10,7 @@ const ModelDescriptor& dsmcRegistration() {
     static const ModelDescriptor descriptor{
         .kind = "dsmc",
         .title = "Rarefied gas (DSMC)",
-        .units = {"SI", "length m, time s, mass kg, temperature K; molecular mass in u"},
+        .units = {"SI", "length m, time s, mass kg, temperature K; molecular mass in u", "s"},
         .specs = &DsmcParams::describe(),
         .create = []() -> std::unique_ptr<Model> { return std::make_unique<DsmcModel>(); },
         .particleCount =
@@ -38,6 +38,8 @@ const ModelDescriptor& dsmcRegistration() {
                    {"pairs per step", {{"ng", "candidates ng", kBlue}, {"nc", "collisions nc", kRed}}},
                    {"(σ c_r)_max [m³/s]", {{"sigma_cr_max", "(σ c_r)_max", kGrey}}}}},
         .distributions = {"speedHistogram", "vxHistogram"},
+        // The cell's relaxation (a few hundred steps of 10–20 µs) unfolds over a few seconds.
+        .watchableRate = 0.005,
     };
     return descriptor;
 }

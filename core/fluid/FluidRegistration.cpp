@@ -24,7 +24,7 @@ const ModelDescriptor& fluidRegistration() {
     static const ModelDescriptor descriptor{
         .kind = "fluid",
         .title = "Fluid (position-based)",
-        .units = {"mixed (L, s)", "length L, time s, unit particle mass; gravity in L/s²"},
+        .units = {"mixed (L, s)", "length L, time s, unit particle mass; gravity in L/s²", "s"},
         .specs = &FluidParams::describe(),
         .create = []() -> std::unique_ptr<Model> { return std::make_unique<FluidModel>(); },
         .particleCount =
@@ -51,6 +51,9 @@ const ModelDescriptor& fluidRegistration() {
                      {"neighbours_max", "max", kOrange},
                      {"neighbours_min", "min", kGrey}}}}},
         .distributions = {},
+        // A tank tens of L high under g = 9.8 L/s² empties in seconds of model time: ten a second keeps a
+        // dam break to a few seconds on the screen.
+        .watchableRate = 10.0,
     };
     return descriptor;
 }

@@ -10,7 +10,7 @@ const ModelDescriptor& gasRegistration() {
     static const ModelDescriptor descriptor{
         .kind = "gas",
         .title = "Gas (molecular dynamics)",
-        .units = {"reduced (L, T, M)", "length L, time T, mass M; energies and kT in M·L²/T²"},
+        .units = {"reduced (L, T, M)", "length L, time T, mass M; energies and kT in M·L²/T²", "T"},
         .specs = &GasParams::describe(),
         .create = []() -> std::unique_ptr<Model> { return std::make_unique<GasModel>(); },
         .particleCount =
@@ -34,6 +34,9 @@ const ModelDescriptor& gasRegistration() {
                      {"pressure_ideal", "N kT / A", kGrey}}},
                    {"kT", {{"kT", "kT", kRed}, {"kT_a", "kT of A", kBlue}, {"kT_b", "kT of B", kOrange}}}}},
         .distributions = {"speedHistogram"},
+        // At kT ≈ 0.5 a disk moves about 1 L per T: 2.5 T a second crosses the 2 L box in about a second,
+        // and a dragged disc (tool speed 0.3 L/T) crosses it in under 3 s.
+        .watchableRate = 2.5,
     };
     return descriptor;
 }

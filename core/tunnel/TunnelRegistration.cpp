@@ -12,7 +12,8 @@ const ModelDescriptor& tunnelRegistration() {
         .title = "Rarefied flow (DSMC)",
         .units =
             {"SI",
-             "length m, time s, mass kg, temperature K; molecular mass in u; forces and F_N per m of depth"},
+             "length m, time s, mass kg, temperature K; molecular mass in u; forces and F_N per m of depth",
+             "s"},
         .specs = &TunnelParams::describe(),
         .create = []() -> std::unique_ptr<Model> { return std::make_unique<TunnelModel>(); },
         .particleCount =
@@ -31,6 +32,8 @@ const ModelDescriptor& tunnelRegistration() {
                    {"simulated molecules", {{"particles", "molecules", kBlue}}},
                    {"collisions per step", {{"collisions", "collisions", kRed}}}}},
         .distributions = {"speedHistogram"},
+        // A molecule of a 2600 m/s stream crosses a 0.2 m tunnel in 0.8 s of wall time.
+        .watchableRate = 1e-4,
     };
     return descriptor;
 }

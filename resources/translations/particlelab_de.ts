@@ -2102,6 +2102,10 @@ Wirkt nach „Zurücksetzen“.</translation>
         <source>Show</source>
         <translation>Anzeige</translation>
     </message>
+    <message>
+        <source>auto</source>
+        <translation>auto</translation>
+    </message>
 </context>
 <context>
     <name>pl::ui::MainWindow</name>
@@ -2144,10 +2148,6 @@ Wirkt nach „Zurücksetzen“.</translation>
     <message>
         <source>Cannot write %1: %2</source>
         <translation>%1 kann nicht geschrieben werden: %2</translation>
-    </message>
-    <message>
-        <source>%1 particles   t = %2   step %3   %4 steps/s   %5 fps   %6</source>
-        <translation>%1 Teilchen   t = %2   Schritt %3   %4 Schritte/s   %5 Bilder/s   %6</translation>
     </message>
     <message>
         <source>GPU</source>
@@ -2256,10 +2256,6 @@ Wirkt nach „Zurücksetzen“.</translation>
     <message>
         <source> Steps per frame </source>
         <translation> Schritte pro Bild </translation>
-    </message>
-    <message>
-        <source>Signed speed: negative values run time backwards, 0 pauses ([ slower, ] faster)</source>
-        <translation>Geschwindigkeit mit Vorzeichen: negative Werte lassen die Zeit rückwärts laufen, 0 hält an ([ langsamer, ] schneller)</translation>
     </message>
     <message>
         <source>Slower</source>
@@ -2424,10 +2420,6 @@ Wirkt nach „Zurücksetzen“.</translation>
     <message>
         <source> Cool </source>
         <translation> Kühlen </translation>
-    </message>
-    <message>
-        <source>Hold to the right to heat, to the left to cool; it springs back when released</source>
-        <translation>Nach rechts halten heizt, nach links kühlt; beim Loslassen springt der Regler zurück</translation>
     </message>
     <message>
         <source> Heat </source>
@@ -2679,6 +2671,50 @@ Wirkt nach „Zurücksetzen“.</translation>
         <source>● REC %1 s</source>
         <translation>● REC %1 s</translation>
     </message>
+    <message>
+        <source>%1 particles   t = %2   step %3   %4 steps/s (%5 %6 per second)   %7 fps   %8</source>
+        <translation>%1 Teilchen   t = %2   Schritt %3   %4 Schritte/s (%5 %6 pro Sekunde)   %7 Bilder/s   %8</translation>
+    </message>
+    <message>
+        <source>Automatic pace</source>
+        <translation>Automatisches Tempo</translation>
+    </message>
+    <message>
+        <source>As many steps as half of each frame allows, up to a pace that keeps the scene watchable</source>
+        <translation>So viele Schritte, wie die Hälfte jedes Bildes erlaubt, bis zu einem Tempo, bei dem man der Szene noch folgen kann</translation>
+    </message>
+    <message>
+        <source>Auto</source>
+        <translation>Auto</translation>
+    </message>
+    <message>
+        <source>Signed steps per frame: negative values run time backwards, 0 stands still ([ slower, ] faster); a number typed here fixes the pace</source>
+        <translation>Schritte pro Bild mit Vorzeichen: negative Werte lassen die Zeit rückwärts laufen, 0 hält sie an ([ langsamer, ] schneller); eine hier eingegebene Zahl legt das Tempo fest</translation>
+    </message>
+    <message>
+        <source>Hold to the right to heat, to the left to cool, the faster the further (at the right end kT doubles in about 4 s of the scene&apos;s pace); it springs back when released</source>
+        <translation>Nach rechts halten zum Heizen, nach links zum Kühlen, je weiter, desto schneller (am rechten Ende verdoppelt sich kT in etwa 4 s im Tempo der Szene); losgelassen springt er zurück</translation>
+    </message>
+    <message>
+        <source>auto </source>
+        <translation>auto </translation>
+    </message>
+    <message>
+        <source>Gravity %1</source>
+        <translation>Schwerkraft %1</translation>
+    </message>
+    <message>
+        <source>Gravity (g = %1 %2)</source>
+        <translation>Schwerkraft (g = %1 %2)</translation>
+    </message>
+    <message>
+        <source>This scene has no gravity (g = 0): set Gravity in Parameters</source>
+        <translation>Diese Szene hat keine Schwerkraft (g = 0): Schwerkraft unter „Parameter“ einstellen</translation>
+    </message>
+    <message>
+        <source>Switch gravity on or off (%1)</source>
+        <translation>Schwerkraft ein- oder ausschalten (%1)</translation>
+    </message>
 </context>
 <context>
     <name>pl::ui::MethodsLab</name>
@@ -2735,6 +2771,10 @@ Wirkt nach „Zurücksetzen“.</translation>
     <message>
         <source>Units: %1</source>
         <translation>Einheiten: %1</translation>
+    </message>
+    <message>
+        <source>%1: “%2” is not a number: decimals are written with “%3” (allowed: %4)</source>
+        <translation>%1: „%2“ ist keine Zahl: Dezimalstellen werden mit „%3“ abgetrennt (erlaubt: %4)</translation>
     </message>
 </context>
 <context>

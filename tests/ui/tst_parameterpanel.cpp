@@ -1,7 +1,9 @@
 // The units line says the kind's unit system; and one way to reject a value: a rejected field keeps what was
 // typed, turns red and says under it, in the labels' words with unit and allowed range, what is wrong; no
 // dialog opens and the model is untouched. A valid value clears the mark. Values are typed with QTest into
-// the panel's real editors.
+// the panel's real editors. Numbers are read in the UI's language, letters are refused in place, a typed
+// number keeps its form, the wheel scrolls the panel rather than a field not clicked into, and the line
+// about changes waiting for Reset moves no field.
 #include "ExperimentDocument.h"
 #include "MainWindow.h"
 #include "SimulationController.h"
@@ -13,8 +15,10 @@
 #include <QLineEdit>
 #include <QRegularExpression>
 #include <QScrollArea>
+#include <QScrollBar>
 #include <QSettings>
 #include <QStandardPaths>
+#include <QWheelEvent>
 #include <QtTest>
 
 using namespace pl;
@@ -38,6 +42,16 @@ void typeInto(QWidget* field, const QString& text) {
 QString allowedFor(const Model* model, const std::string& key) {
     return QString::fromStdString(describeAllowed(*findSpec(model->paramSpecs(), key)));
 }
+
+// The default locale (the UI's language) for one test, put back when it ends.
+class LocaleForTest {
+public:
+    explicit LocaleForTest(const QLocale& locale) { QLocale::setDefault(locale); }
+    ~LocaleForTest() { QLocale::setDefault(previous_); }
+
+private:
+    QLocale previous_;
+};
 
 bool looksRed(QWidget* field) {
     const QColor base = field->palette().color(QPalette::Base);
@@ -156,6 +170,111 @@ private slots:
         QVERIFY(panel_->apply("gravity", 0.5).isEmpty()); // every field is shown again after a change
         QCOMPARE(qobject_cast<QAbstractSpinBox*>(panel_->editor("dt"))->text(), QString("10"));
         QVERIFY(!panel_->problem("dt").isEmpty());
+    }
+
+    // Numbers are read in the UI's language: German 2,5 is 2.5.
+    void aGermanCommaIsTheDecimalMark() {
+        const LocaleForTest german_(QLocale(QLocale::German, QLocale::Germany));
+        ui::MainWindow german;
+        QVERIFY(german.openPreset("gas-mixture"));
+        QVERIFY(test::showActive(german));
+        typeInto(german.parameters()->editor("mass_a"), "2,5");
+        QVERIFY2(german.parameters()->problem("mass_a").isEmpty(),
+                 qPrintable(german.parameters()->problem("mass_a")));
+        QCOMPARE(std::get<double>(german.controller()->model()->params().at("mass_a")), 2.5);
+        QCOMPARE(qobject_cast<QAbstractSpinBox*>(german.parameters()->editor("mass_a"))->text(),
+                 QString("2,5"));
+        german.document()->setModified(false);
+    }
+
+    // In English 2,5 is no number: refused in place with the reason, never read as 25.
+    void anEnglishCommaIsRefusedInPlace() {
+        const LocaleForTest english_(QLocale(QLocale::English, QLocale::UnitedStates));
+        ui::MainWindow english;
+        QVERIFY(english.openPreset("gas-mixture"));
+        QVERIFY(test::showActive(english));
+        const double before = std::get<double>(english.controller()->model()->params().at("mass_a"));
+        QWidget* mass = english.parameters()->editor("mass_a");
+        typeInto(mass, "2,5");
+        QCOMPARE(qobject_cast<QAbstractSpinBox*>(mass)->text(), QString("2,5"));
+        QVERIFY(looksRed(mass));
+        const QString problem = english.parameters()->problem("mass_a");
+        QVERIFY2(problem.contains("not a number") && problem.contains("“.”"), qPrintable(problem));
+        QCOMPARE(std::get<double>(english.controller()->model()->params().at("mass_a")), before);
+        english.document()->setModified(false);
+    }
+
+    void lettersTurnTheFieldRed() {
+        const double before = std::get<double>(window_->controller()->model()->params().at("gravity"));
+        QWidget* gravity = panel_->editor("gravity");
+        typeInto(gravity, "abc");
+        QCOMPARE(qobject_cast<QAbstractSpinBox*>(gravity)->text(), QString("abc")); // not swallowed
+        QVERIFY(looksRed(gravity));
+        QVERIFY2(panel_->problem("gravity").contains("not a number"), qPrintable(panel_->problem("gravity")));
+        QCOMPARE(std::get<double>(window_->controller()->model()->params().at("gravity")), before);
+    }
+
+    void aTypedNumberKeepsItsForm() {
+        typeInto(panel_->editor("count_a"), "1e3");
+        QVERIFY2(panel_->problem("count_a").isEmpty(), qPrintable(panel_->problem("count_a")));
+        QCOMPARE(std::get<double>(window_->controller()->model()->params().at("count_a")), 1000.0);
+        QCOMPARE(qobject_cast<QAbstractSpinBox*>(panel_->editor("count_a"))->text(), QString("1e3"));
+        // Other edits show every field again: this one keeps what was typed.
+        QVERIFY(panel_->apply("gravity", 0.5).isEmpty());
+        QCOMPARE(qobject_cast<QAbstractSpinBox*>(panel_->editor("count_a"))->text(), QString("1e3"));
+    }
+
+    // The wheel over a field that was not clicked into scrolls the panel and changes no value.
+    void theWheelScrollsThePanelNotAField() {
+        window_->resize(1024, 700);
+        QTest::qWait(50);
+        auto* scroll = panel_->findChild<QScrollArea*>();
+        QVERIFY(scroll);
+        QVERIFY2(scroll->verticalScrollBar()->maximum() > 0, "the panel scrolls at 1024 × 700");
+        window_->viewport()->setFocus();
+        const ParamValues before = window_->controller()->model()->params();
+        for (const std::string key : {"diameter_a", "integrator"}) {
+            QWidget* field = panel_->editor(key);
+            QVERIFY(field);
+            scroll->ensureWidgetVisible(field);
+            QScrollBar* bar = scroll->verticalScrollBar();
+            const int position = bar->value();
+            const int delta = position == bar->maximum() ? 120 : -120; // up at the end, else down
+            const QPoint at = field->rect().center();
+            QWheelEvent wheel(at, field->mapToGlobal(at), {}, QPoint(0, delta), Qt::NoButton, {},
+                              Qt::NoScrollPhase, false);
+            QApplication::sendEvent(field, &wheel);
+            QVERIFY2(!wheel.isAccepted(), key.c_str()); // passed on, as Qt passes a real wheel to the parents
+            QVERIFY2(window_->controller()->model()->params() == before, key.c_str());
+            QApplication::sendEvent(scroll->viewport(), &wheel);
+            QVERIFY2(bar->value() != position, key.c_str());
+            QVERIFY(!field->hasFocus());
+        }
+        // Clicked into, the wheel turns the field.
+        auto* diameter = qobject_cast<QAbstractSpinBox*>(panel_->editor("diameter_a"));
+        scroll->ensureWidgetVisible(diameter);
+        diameter->setFocus(Qt::MouseFocusReason);
+        const QPoint at = diameter->rect().center();
+        QWheelEvent wheel(at, diameter->mapToGlobal(at), {}, QPoint(0, 120), Qt::NoButton, {},
+                          Qt::NoScrollPhase, false);
+        QApplication::sendEvent(diameter, &wheel);
+        QVERIFY(std::get<double>(window_->controller()->model()->params().at("diameter_a")) !=
+                std::get<double>(before.at("diameter_a")));
+    }
+
+    // The line that says changes wait for Reset takes no room of its own: the fields stay where they are.
+    void theFieldsStayPutWhenAChangeWaitsForReset() {
+        QWidget* dt = panel_->editor("dt");
+        const QPoint before = dt->mapTo(panel_, QPoint(0, 0));
+        QVERIFY(panel_->apply("count_a", 900.0).isEmpty());
+        QCOMPARE(window_->controller()->pendingUntilReset().size(), std::size_t(1));
+        QTest::qWait(20);
+        QCOMPARE(dt->mapTo(panel_, QPoint(0, 0)), before);
+        auto* waiting = panel_->findChild<QLabel*>("pendingLine");
+        QVERIFY(waiting && waiting->isVisible());
+        QVERIFY(panel_->apply("count_a", 800.0).isEmpty());
+        QTest::qWait(20);
+        QCOMPARE(dt->mapTo(panel_, QPoint(0, 0)), before);
     }
 
 private:

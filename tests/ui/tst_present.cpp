@@ -219,7 +219,8 @@ private slots:
         QTest::mousePress(heat, Qt::LeftButton, {}, heat->rect().center());
         QTest::mouseMove(heat, QPoint(heat->width() - 5, heat->height() / 2));
         QVERIFY(heat->value() > 50);
-        runFrames(window, 10);
+        // Heating is a rate per simulated time (kT × 2 in 10 T at full): held until it shows.
+        for (int round = 0; round < 100 && latestKT() <= 1.25 * kT0; ++round) runFrames(window, 10);
         QTest::mouseRelease(heat, Qt::LeftButton, {}, QPoint(heat->width() - 5, heat->height() / 2));
         QCOMPARE(heat->value(), 0);
         const double kT1 = latestKT();

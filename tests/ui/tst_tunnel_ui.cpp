@@ -142,7 +142,7 @@ private slots:
         QVERIFY(pickInCombo(chooser, ui::viewChoiceText("mach")));
         QCOMPARE(std::get<std::string>(window.controller()->model()->params().at("view")),
                  std::string("mach"));
-        QVERIFY(window.isWindowModified());
+        QVERIFY(!window.isWindowModified());        // Show is a view of the experiment, not an edit of it
         const QImage shot = window.viewportImage(); // paints the frame: the core's snapshot is this one
         const SceneView& scene = window.viewportCore()->scene();
         QVERIFY(scene.field.has_value());

@@ -63,6 +63,9 @@ bool installLanguage(const QString& code) {
     for (auto* translator : {&state.own, &state.qt})
         if (*translator) QCoreApplication::installTranslator(translator->get());
     state.code = state.own ? QLocale(state.own->language()).name().section('_', 0, 0) : QStringLiteral("en");
+    // Numbers are read and written in the language of the texts around them (German 2,5; English 2.5),
+    // not in a system setting the user does not see.
+    QLocale::setDefault(found ? locale : QLocale(QLocale::English, QLocale::UnitedStates));
     return found;
 }
 

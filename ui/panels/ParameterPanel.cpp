@@ -11,12 +11,14 @@
 #include <QCheckBox>
 #include <QColorDialog>
 #include <QComboBox>
+#include <QEvent>
 #include <QFormLayout>
 #include <QGroupBox>
 #include <QLabel>
 #include <QPushButton>
 #include <QScrollArea>
 #include <QSignalBlocker>
+#include <QStackedWidget>
 #include <QVBoxLayout>
 
 namespace pl::ui {
@@ -59,12 +61,19 @@ ParameterPanel::ParameterPanel(SimulationController* controller, QWidget* parent
     units_->setWordWrap(true);
     layout->addWidget(units_);
     auto* banner = new QHBoxLayout;
-    pending_ = new QLabel(this);
+    banner_ = new QStackedWidget(this);
+    idleLine_ = new QLabel(tr("Parameters marked ⟲ take effect on Reset; the others act at once."), banner_);
+    idleLine_->setWordWrap(true);
+    pending_ = new QLabel(banner_);
+    pending_->setObjectName("pendingLine");
     pending_->setWordWrap(true);
+    pending_->setStyleSheet(QStringLiteral("font-weight: bold; color: #a05000;"));
+    banner_->addWidget(idleLine_);
+    banner_->addWidget(pending_);
     resetButton_ = new QPushButton(tr("Reset now"), this);
     resetButton_->setToolTip(tr("Restart the experiment so the parameters marked ⟲ take effect (Ctrl+R)"));
     connect(resetButton_, &QPushButton::clicked, controller_, &SimulationController::reset);
-    banner->addWidget(pending_, 1);
+    banner->addWidget(banner_, 1);
     banner->addWidget(resetButton_);
     layout->addLayout(banner);
     auto* scroll = new QScrollArea(this);
@@ -153,9 +162,16 @@ QWidget* ParameterPanel::createEditor(const ParamSpec& spec) {
                 apply(key, box->value());
         });
         connect(box, &ScientificSpinBox::unreadableText, this, [this, spec](const QString& text) {
-            showProblem(spec.key,
-                        tr("%1: “%2” is not a number (allowed: %3)")
-                            .arg(translatedLabel(spec), text, QString::fromStdString(describeAllowed(spec))));
+            // A decimal mark of the other language is named: in English 2,5 is no number (never 25).
+            const QString point = ScientificSpinBox::numberLocale().decimalPoint();
+            const QString other = point == QStringLiteral(".") ? QStringLiteral(",") : QStringLiteral(".");
+            const QString allowed = QString::fromStdString(describeAllowed(spec));
+            showProblem(
+                spec.key,
+                text.contains(other)
+                    ? tr("%1: “%2” is not a number: decimals are written with “%3” (allowed: %4)")
+                          .arg(translatedLabel(spec), text, point, allowed)
+                    : tr("%1: “%2” is not a number (allowed: %3)").arg(translatedLabel(spec), text, allowed));
         });
         connect(box, &ScientificSpinBox::editCancelled, this, [this, key] {
             clearProblem(key);
@@ -172,6 +188,8 @@ QWidget* ParameterPanel::createEditor(const ParamSpec& spec) {
     }
     case ParamKind::Choice: {
         auto* box = new QComboBox(content_);
+        box->setFocusPolicy(Qt::StrongFocus);
+        box->installEventFilter(this);
         for (const auto& choice : spec.choices) box->addItem(QString::fromStdString(choice));
         connect(box, &QComboBox::activated, this,
                 [this, key, box](int) { apply(key, box->currentText().toStdString()); });
@@ -267,15 +285,25 @@ void ParameterPanel::showValues() {
 
 void ParameterPanel::updatePendingBanner() {
     const auto waiting = controller_->pendingUntilReset().size();
-    if (waiting == 0) {
-        pending_->setText(tr("Parameters marked ⟲ take effect on Reset; the others act at once."));
-        pending_->setStyleSheet({});
-        resetButton_->setEnabled(false);
-    } else {
+    // The waiting line's longest form is set while it is hidden too, so the banner keeps its height.
+    pending_->setText(
+        tr("%n change(s) wait for Reset.", nullptr, static_cast<int>(std::max<std::size_t>(waiting, 2))));
+    if (waiting > 0)
         pending_->setText(tr("%n change(s) wait for Reset.", nullptr, static_cast<int>(waiting)));
-        pending_->setStyleSheet(QStringLiteral("font-weight: bold; color: #a05000;"));
-        resetButton_->setEnabled(true);
+    banner_->setCurrentWidget(waiting == 0 ? idleLine_ : pending_);
+    resetButton_->setEnabled(waiting > 0);
+}
+
+bool ParameterPanel::eventFilter(QObject* watched, QEvent* event) {
+    // A choice turns under the wheel only once clicked into; otherwise the wheel scrolls the panel.
+    if (event->type() == QEvent::Wheel) {
+        auto* widget = qobject_cast<QWidget*>(watched);
+        if (widget && !widget->hasFocus()) {
+            event->ignore(); // on to the scroll area
+            return true;
+        }
     }
+    return QWidget::eventFilter(watched, event);
 }
 
 } // namespace pl::ui

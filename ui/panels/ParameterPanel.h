@@ -14,6 +14,7 @@
 class QFormLayout;
 class QLabel;
 class QPushButton;
+class QStackedWidget;
 class QVBoxLayout;
 
 namespace pl::ui {
@@ -38,7 +39,8 @@ private:
     void showValues();
     void updatePendingBanner();
     QWidget* createEditor(const ParamSpec& spec);
-    void showValue(const std::string& key); // the model's value, without signals
+    bool eventFilter(QObject* watched, QEvent* event) override; // the wheel over an unfocused choice
+    void showValue(const std::string& key);                     // the model's value, without signals
     void showProblem(const std::string& key, const QString& text);
     void clearProblem(const std::string& key);
 
@@ -46,6 +48,10 @@ private:
     QVBoxLayout* groups_ = nullptr;
     QWidget* content_ = nullptr;
     QLabel* units_ = nullptr; // "Units: reduced (L, T, M)"; the tooltip says each quantity's unit
+    // The banner's two lines, stacked: its height is the taller one's, so the fields below never move
+    // when changes start or stop waiting for Reset.
+    QStackedWidget* banner_ = nullptr;
+    QLabel* idleLine_ = nullptr;
     QLabel* pending_ = nullptr;
     QPushButton* resetButton_ = nullptr;
     std::map<std::string, QWidget*> editors_;

@@ -13,6 +13,22 @@ ScientificSpinBox::ScientificSpinBox(QWidget* parent) : QDoubleSpinBox(parent) {
     setDecimals(300);
     setKeyboardTracking(false);
     setAccelerated(true);
+    setFocusPolicy(Qt::StrongFocus); // the wheel does not take the focus (nor the value) on its way past
+}
+
+double ScientificSpinBox::readNumber(const QString& text, bool* ok) {
+    const QLocale locale = numberLocale();
+    if (text.contains(locale.groupSeparator())) {
+        *ok = false;
+        return 0.0;
+    }
+    return locale.toDouble(text, ok);
+}
+
+QLocale ScientificSpinBox::numberLocale() {
+    QLocale locale;
+    locale.setNumberOptions(QLocale::OmitGroupSeparator | QLocale::RejectGroupSeparator);
+    return locale;
 }
 
 void ScientificSpinBox::setStepLimits(double min, double max) {
@@ -28,32 +44,43 @@ QString ScientificSpinBox::body(const QString& text) const {
 
 bool ScientificSpinBox::textIsNumber() const {
     bool ok = false;
-    QLocale().toDouble(body(lineEdit()->text()), &ok);
+    readNumber(body(lineEdit()->text()), &ok);
     return ok;
 }
 
 QString ScientificSpinBox::textFromValue(double value) const {
+    if (!typed_.isEmpty() && value == typedValue_) return typed_;
     if (integer_ && value == std::floor(value) && std::abs(value) < 1e15)
-        return QLocale().toString(value, 'f', 0);
-    return QLocale().toString(value, 'g', 6);
+        return numberLocale().toString(value, 'f', 0);
+    return numberLocale().toString(value, 'g', 6);
 }
 
 double ScientificSpinBox::valueFromText(const QString& text) const {
-    return QLocale().toDouble(body(text));
+    bool ok = false;
+    return readNumber(body(text), &ok);
 }
 
+// Whatever is typed stays in the field (letters, a comma where the language writes a point): what is no
+// number is reported on Enter or when the field is left, never swallowed while typing.
 QValidator::State ScientificSpinBox::validate(QString& text, int&) const {
-    const QString b = body(text);
-    if (b.isEmpty() || b == "-" || b == "+" || b.endsWith('e') || b.endsWith('E') || b.endsWith("e-") ||
-        b.endsWith("E-") || b.endsWith("e+") || b.endsWith("E+"))
-        return QValidator::Intermediate;
     bool ok = false;
-    const double value = QLocale().toDouble(b, &ok);
-    if (!ok) return QValidator::Invalid;
-    return value >= minimum() && value <= maximum() ? QValidator::Acceptable : QValidator::Intermediate;
+    const double value = readNumber(body(text), &ok);
+    return ok && value >= minimum() && value <= maximum() ? QValidator::Acceptable : QValidator::Intermediate;
+}
+
+void ScientificSpinBox::fixup(QString&) const {}
+
+void ScientificSpinBox::rememberTyped() {
+    bool ok = false;
+    const QString typed = body(lineEdit()->text());
+    const double value = readNumber(typed, &ok);
+    if (!ok) return;
+    typed_ = typed;
+    typedValue_ = value;
 }
 
 void ScientificSpinBox::stepBy(int steps) {
+    typed_.clear(); // the arrows' value is shown in the box's own form
     const double v = value();
     double next = v == 0.0 ? steps * 1e-3 : v * std::pow(1.1, steps);
     if (increment_ > 0) next = v + steps * increment_;
@@ -68,6 +95,7 @@ void ScientificSpinBox::keyPressEvent(QKeyEvent* event) {
         emit unreadableText(lineEdit()->text()); // not interpreted: the spin box would put back its value
         return;
     }
+    if (enter) rememberTyped();
     if (event->key() == Qt::Key_Escape) {
         setValue(value()); // the text shows the value again
         emit editCancelled();
@@ -78,10 +106,20 @@ void ScientificSpinBox::keyPressEvent(QKeyEvent* event) {
 void ScientificSpinBox::focusOutEvent(QFocusEvent* event) {
     const QString typed = lineEdit()->text();
     const bool unreadable = reportsUnreadable_ && !textIsNumber();
+    if (!unreadable) rememberTyped();
     QDoubleSpinBox::focusOutEvent(event);
     if (!unreadable) return;
     lineEdit()->setText(typed); // the base class showed the previous value again
     emit unreadableText(typed);
+}
+
+void ScientificSpinBox::wheelEvent(QWheelEvent* event) {
+    if (!hasFocus()) {
+        event->ignore(); // on to the scroll area around the field
+        return;
+    }
+    typed_.clear();
+    QDoubleSpinBox::wheelEvent(event);
 }
 
 } // namespace pl::ui

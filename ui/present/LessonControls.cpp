@@ -134,8 +134,8 @@ void LessonControls::addRunRow() {
 }
 
 void LessonControls::addGasControls() {
-    // Temperature: held to a side it heats or cools at up to ±3 % per frame, and springs back, as the
-    // tool bar's Heat slider; the readout shows where kT has got to.
+    // Temperature: held to a side it heats or cools at a rate per simulated time proportional to the
+    // slider, and springs back, as the tool bar's Heat slider; the readout shows where kT has got to.
     QSlider* heat = addSlider(addGroup(1, 0), tr("◀ Cool   Heat ▶"), nullptr);
     heat->setObjectName("lessonHeat");
     heat->setRange(-kSliderSteps, kSliderSteps);
@@ -251,14 +251,22 @@ void LessonControls::addFluidControls() {
 
 void LessonControls::addDsmcControls() {
     QLabel* value = nullptr;
+    // 1 … 10 steps per frame, and at the right end the automatic pace (the scene's default).
+    constexpr int kFixedSteps = 10, kAutomatic = kFixedSteps + 1;
     QSlider* speed = addSlider(addGroup(1, 0), tr("Steps per frame"), &value);
     speed->setObjectName("lessonSpeed");
-    speed->setRange(1, 10);
-    speed->setValue(std::max(1, std::abs(controller_->stepsPerFrame())));
-    value->setText(QString::number(speed->value()));
-    connect(speed, &QSlider::valueChanged, this, [this, value](int n) {
-        value->setText(QString::number(n));
-        controller_->setStepsPerFrame(n);
+    speed->setRange(1, kAutomatic);
+    const auto show = [value](int n) { value->setText(n == kAutomatic ? tr("auto") : QString::number(n)); };
+    speed->setValue(controller_->automaticPace()
+                        ? kAutomatic
+                        : std::clamp(std::abs(controller_->stepsPerFrame()), 1, kFixedSteps));
+    show(speed->value());
+    connect(speed, &QSlider::valueChanged, this, [this, show](int n) {
+        show(n);
+        if (n == kAutomatic)
+            controller_->setAutomaticPace();
+        else
+            controller_->setStepsPerFrame(n);
     });
 }
 

@@ -59,6 +59,7 @@ void ViewportCore::requestFrame() const {
 }
 
 void ViewportCore::endPaint() {
+    controller_->frameShown();
     ++framesCounted_;
     if (frameClock_.elapsed() >= 1000) {
         framesPerSecond_ = 1000.0 * framesCounted_ / static_cast<double>(frameClock_.restart());

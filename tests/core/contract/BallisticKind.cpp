@@ -194,7 +194,7 @@ const ModelDescriptor& ballisticRegistration() {
     static const ModelDescriptor descriptor{
         .kind = "ballistic",
         .title = "Ballistic points (test kind)",
-        .units = {"reduced (L, T)", "length L, time T, unit mass; energies per unit mass in L²/T²"},
+        .units = {"reduced (L, T)", "length L, time T, unit mass; energies per unit mass in L²/T²", "T"},
         .specs = &BallisticParams::describe(),
         .create = []() -> std::unique_ptr<Model> { return std::make_unique<BallisticModel>(); },
         .particleCount =
@@ -209,6 +209,7 @@ const ModelDescriptor& ballisticRegistration() {
                    {"energy [L²/T²]", {{"energy", "kinetic + potential", plot_colours::kBlue}}},
                    {}}},
         .distributions = {},
+        .watchableRate = 1.0,
     };
     return descriptor;
 }
