@@ -118,6 +118,33 @@ std::unique_ptr<ui::SeriesPlot> hiddenPlot(ui::SimulationController& controller,
     return plot;
 }
 
+// What both commands check before anything runs: --out is not the input and can be written, then the
+// experiment builds. Returns the exit code of a refusal (its sentence printed), or 0 with `built` set.
+template <class Options> int buildForOutput(const Options& options, std::unique_ptr<Model>& built) {
+    if (const std::string refusal =
+            sharedFileRefusal({{"--out", options.out}}, {{"the input", experimentFile(options.preset)}});
+        !refusal.empty()) {
+        std::cerr << "particlelab-cli: " << refusal << "\n";
+        return kBadInput;
+    }
+    try {
+        checkOutputPath(options.out);
+    } catch (const FileError& e) {
+        std::cerr << "particlelab-cli: " << e.what() << "\n";
+        return kCannotWrite;
+    }
+    try {
+        built = prepare(options.preset, options.sets, options.seed, options.backend);
+    } catch (const std::bad_alloc&) {
+        std::cerr << "particlelab-cli: not enough memory to build this experiment; use fewer particles\n";
+        return kBadInput;
+    } catch (const std::exception& e) {
+        std::cerr << "particlelab-cli: " << e.what() << "\n";
+        return kBadInput;
+    }
+    return 0;
+}
+
 } // namespace
 
 int recordClip(const RecordOptions& options) {
@@ -131,28 +158,8 @@ int recordClip(const RecordOptions& options) {
         std::cerr << "particlelab-cli: " << refusal << "\n";
         return kBadInput;
     }
-    if (const std::string refusal =
-            sharedFileRefusal({{"--out", options.out}}, {{"the input", experimentFile(options.preset)}});
-        !refusal.empty()) {
-        std::cerr << "particlelab-cli: " << refusal << "\n";
-        return kBadInput;
-    }
-    try {
-        checkOutputPath(options.out);
-    } catch (const FileError& e) {
-        std::cerr << "particlelab-cli: " << e.what() << "\n";
-        return kCannotWrite;
-    }
     std::unique_ptr<Model> built;
-    try {
-        built = prepare(options.preset, options.sets, options.seed, options.backend);
-    } catch (const std::bad_alloc&) {
-        std::cerr << "particlelab-cli: not enough memory to build this experiment; use fewer particles\n";
-        return kBadInput;
-    } catch (const std::exception& e) {
-        std::cerr << "particlelab-cli: " << e.what() << "\n";
-        return kBadInput;
-    }
+    if (const int refused = buildForOutput(options, built)) return refused;
     const std::string kind = built->kind();
     if (!options.plot.empty() && !plotSpec(kind, options.plot)) {
         std::cerr << "particlelab-cli: --plot '" << options.plot << "' is no plot of a " << kind
@@ -250,25 +257,8 @@ int writeReport(const ReportOptions& options) {
         std::cerr << "particlelab-cli: --out '" << options.out << "' needs the suffix .pdf or .html\n";
         return kBadInput;
     }
-    if (const std::string refusal =
-            sharedFileRefusal({{"--out", options.out}}, {{"the input", experimentFile(options.preset)}});
-        !refusal.empty()) {
-        std::cerr << "particlelab-cli: " << refusal << "\n";
-        return kBadInput;
-    }
-    try {
-        checkOutputPath(options.out);
-    } catch (const FileError& e) {
-        std::cerr << "particlelab-cli: " << e.what() << "\n";
-        return kCannotWrite;
-    }
     std::unique_ptr<Model> built;
-    try {
-        built = prepare(options.preset, options.sets, options.seed, options.backend);
-    } catch (const std::exception& e) {
-        std::cerr << "particlelab-cli: " << e.what() << "\n";
-        return kBadInput;
-    }
+    if (const int refused = buildForOutput(options, built)) return refused;
     const long long planned = built->plannedSteps();
     const long long steps = options.steps.value_or(planned > 0 ? planned : kReportDefaultSteps);
     const std::string kind = built->kind();

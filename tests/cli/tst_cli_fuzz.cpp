@@ -420,11 +420,14 @@ private slots:
         for (const QString& p : problems.mid(0, 20)) qWarning().noquote() << p;
         QVERIFY2(problems.isEmpty(), qPrintable(QString::number(problems.size()) + " wrong outcomes"));
         // The mutations reach every class: a fuzzer that only ever hits bad input tests nothing else.
-        for (const char* outcome : {"ok", "bad input", "blow-up"}) {
+        // (Blow-ups come from the gas's unstable integrators alone, about 1 case in 100.)
+        for (const auto& [outcome, least] :
+             {std::pair{"ok", cases / 100}, std::pair{"bad input", cases / 100},
+              std::pair{"blow-up", std::max(1, cases / 500)}}) {
             int n = 0;
             for (const auto& [category, outcomes] : counts)
                 if (const auto it = outcomes.find(outcome); it != outcomes.end()) n += it->second;
-            QVERIFY2(n >= cases / 100, outcome);
+            QVERIFY2(n >= least, outcome);
         }
         for (const char* category : {"options", "preset", "schema 1", "snapshot", "bench"}) {
             QVERIFY2(counts[category]["ok"] > 0 || QString(category) == "bench", category);
