@@ -1,5 +1,6 @@
-// MediaModule: the media program is looked for beside /proc/self/exe (the build tree) and then in the
-// folder it is installed to (PARTICLELAB_MEDIA_PROGRAM_DIR).
+// MediaModule: the media program is looked for beside /proc/self/exe (the build tree), then where it is
+// installed relative to the program (PARTICLELAB_MEDIA_PROGRAM_FROM_BIN: a package of any prefix), then
+// in the build's install folder (PARTICLELAB_MEDIA_PROGRAM_DIR).
 #include "MediaModule.h"
 
 #include "Commands.h"
@@ -21,8 +22,10 @@ int execMediaProgram(char** argv) {
     std::error_code error;
     const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", error);
     std::string tried;
-    for (const std::filesystem::path& dir : {error ? std::filesystem::path() : self.parent_path(),
-                                             std::filesystem::path(PARTICLELAB_MEDIA_PROGRAM_DIR)}) {
+    const std::filesystem::path bin = error ? std::filesystem::path() : self.parent_path();
+    for (const std::filesystem::path& dir :
+         {bin, bin.empty() ? bin : (bin / PARTICLELAB_MEDIA_PROGRAM_FROM_BIN).lexically_normal(),
+          std::filesystem::path(PARTICLELAB_MEDIA_PROGRAM_DIR)}) {
         if (dir.empty()) continue;
         const std::filesystem::path program = dir / kMediaProgram;
         ::execv(program.c_str(), argv); // returns only on failure
