@@ -223,6 +223,21 @@ void warnIfInaccurate(const Model& model) {
 
 } // namespace
 
+int prepareOrRefuse(const std::string& name, const std::vector<std::string>& sets,
+                    std::optional<std::uint64_t> seed, const std::string& backend,
+                    std::unique_ptr<Model>& model) {
+    try {
+        model = prepare(name, sets, seed, backend);
+    } catch (const std::bad_alloc&) {
+        std::cerr << "particlelab-cli: not enough memory to build this experiment; use fewer particles\n";
+        return kBadInput;
+    } catch (const std::exception& e) {
+        std::cerr << "particlelab-cli: " << e.what() << "\n";
+        return kBadInput;
+    }
+    return 0;
+}
+
 int runSimulation(const RunOptions& options) {
     StopSignals stop; // a signal from here on ends the set-up at once, saying so
     setThreads(options.threads);
@@ -239,15 +254,9 @@ int runSimulation(const RunOptions& options) {
         std::cerr << "particlelab-cli: " << e.what() << "\n";
         return kCannotWrite;
     }
-    try {
-        model = prepare(options.preset, options.sets, options.seed, options.backend);
-    } catch (const std::bad_alloc&) {
-        std::cerr << "particlelab-cli: not enough memory to build this experiment; use fewer particles\n";
-        return kBadInput;
-    } catch (const std::exception& e) {
-        std::cerr << "particlelab-cli: " << e.what() << "\n";
-        return kBadInput;
-    }
+    if (const int refused =
+            prepareOrRefuse(options.preset, options.sets, options.seed, options.backend, model))
+        return refused;
     // --fields and --surface need a model that samples them; refused before anything runs or is written.
     if (const std::string refusal =
             sampledOutputsRefusal(*model, !options.fields.empty(), !options.surface.empty());

@@ -68,6 +68,10 @@ void setThreads(int threads);
 // had is said on stderr. Throws what reading or building throws (bad input).
 std::unique_ptr<Model> prepare(const std::string& name, const std::vector<std::string>& sets,
                                std::optional<std::uint64_t> seed, const std::string& backend);
+// prepare(), its refusal said on stderr: 0 with `model` built, or the exit code (kBadInput).
+int prepareOrRefuse(const std::string& name, const std::vector<std::string>& sets,
+                    std::optional<std::uint64_t> seed, const std::string& backend,
+                    std::unique_ptr<Model>& model);
 
 // Writes text to path atomically (kCannotWrite and a message when it cannot), or to standard output.
 int writeOrPrint(const std::string& path, const std::string& text);

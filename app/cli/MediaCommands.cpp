@@ -133,16 +133,7 @@ template <class Options> int buildForOutput(const Options& options, std::unique_
         std::cerr << "particlelab-cli: " << e.what() << "\n";
         return kCannotWrite;
     }
-    try {
-        built = prepare(options.preset, options.sets, options.seed, options.backend);
-    } catch (const std::bad_alloc&) {
-        std::cerr << "particlelab-cli: not enough memory to build this experiment; use fewer particles\n";
-        return kBadInput;
-    } catch (const std::exception& e) {
-        std::cerr << "particlelab-cli: " << e.what() << "\n";
-        return kBadInput;
-    }
-    return 0;
+    return prepareOrRefuse(options.preset, options.sets, options.seed, options.backend, built);
 }
 
 } // namespace

@@ -190,7 +190,8 @@ class TestRecord : public QObject {
 private slots:
     void initTestCase() {
         if (QStandardPaths::findExecutable("ffprobe").isEmpty())
-            QSKIP("ffprobe (Debian's ffmpeg package) is needed to read the clips back");
+            QFAIL("ffprobe is missing: .ci/install-deps.sh installs it (Debian's ffmpeg package) to read the "
+                  "clips back");
     }
 
     void clipsHaveTheirCodecFramesSizeAndDuration_data() {

@@ -23,7 +23,8 @@ class TestReport : public QObject {
 private slots:
     void pdfHoldsParametersRunAndReadouts() {
         if (QStandardPaths::findExecutable("pdftotext").isEmpty())
-            QSKIP("pdftotext (poppler-utils) is needed");
+            QFAIL("pdftotext is missing: .ci/install-deps.sh installs it (poppler-utils) to read the report "
+                  "back");
         QTemporaryDir dir;
         const QString pdf = dir.filePath("r.pdf");
         const auto r = runCli(kReport + QStringList{"--out", pdf});
