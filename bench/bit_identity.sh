@@ -18,7 +18,7 @@ sed -e 's/"obstacles": \[\]/"obstacles": [{"shape": "disc", "x": 0.2, "y": 0.1, 
   -e 's/"schema": 3,/"schema": 2,/' "$here/resources/presets/gas/gas-write-up.json" >"$work/gas-obstacles.json"
 
 failures=0
-renamed='s/"name": "dsmc-\(cylinder\|free-molecular-cylinder\|shock-tube\|couette\)"/"name": "tunnel-\1"/'
+renamed='s/"name": *"dsmc-\(cylinder\|free-molecular-cylinder\|shock-tube\|couette\)"/"name":"tunnel-\1"/; s/"name": *"\(gas\|fluid\|dsmc\)-seed"/"name":"\1-write-up"/'
 # A snapshot embeds its preset in its build's newest schema: schema 2 reads in the words of schema 3
 # (docs/presets.md, "Schema 3"), so a build before it and one after compare.
 schema3='s/"schema":2,/"schema":3,/; /"model":"\(gas\|fluid\)"/s/"tool_speed":/"tool_speed_factor":/;
@@ -55,27 +55,27 @@ check() { # name, then the run arguments
   done
 }
 
-# The write-up's presets by the names they had before "seed" meant only the random seed (both builds know
-# them).
+# Presets by their names since preset schema 3 (both builds must know them; the snapshots of a build
+# from before the renames are read through the names' sed above).
 for integrator in velocity-verlet symplectic-euler explicit-euler forest-ruth rk4; do
-  check "gas-write-up-$integrator" gas-seed --steps 2000 --every 50 --set integrator=$integrator
+  check "gas-write-up-$integrator" gas-write-up --steps 2000 --every 50 --set integrator=$integrator
 done
-check gas-write-up-thermal gas-seed --steps 2000 --every 50 --set wall_mode=thermal
+check gas-write-up-thermal gas-write-up --steps 2000 --every 50 --set wall_mode=thermal
 check gas-classroom gas-classroom --steps 2000 --every 50
 check gas-mixture gas-mixture --steps 2000 --every 50
 check gas-obstacles "$work/gas-obstacles.json" --steps 2000 --every 50
-check gas-65536 gas-seed --steps 200 --every 20 --set count_a=65536 --set box_width=8 --set box_height=8
-check fluid-write-up-filled fluid-seed --steps 600 --every 20 --set fill_x1=79.2 --set fill_y1=29.5
-check fluid-write-up-xsph-vorticity fluid-seed --steps 600 --every 20 --set fill_x1=79.2 --set fill_y1=29.5 \
+check gas-65536 gas-write-up --steps 200 --every 20 --set count_a=65536 --set box_width=8 --set box_height=8
+check fluid-write-up-filled fluid-write-up --steps 600 --every 20 --set fill_x1=79.2 --set fill_y1=29.5
+check fluid-write-up-xsph-vorticity fluid-write-up --steps 600 --every 20 --set fill_x1=79.2 --set fill_y1=29.5 \
   --set xsph=0.01 --set vorticity=0.5
-check fluid-write-up-odd-2449 fluid-seed --steps 300 --every 20 --set fill_x1=70.1 --set fill_y1=27.5 --set xsph=0.02 --set vorticity=0.2
+check fluid-write-up-odd-2449 fluid-write-up --steps 300 --every 20 --set fill_x1=70.1 --set fill_y1=27.5 --set xsph=0.02 --set vorticity=0.2
 check fluid-dam-break fluid-dam-break --steps 300 --every 10
 check fluid-obstacle fluid-obstacle --steps 300 --every 10
-check dsmc-write-up dsmc-seed --steps 200 --every 20
+check dsmc-write-up dsmc-write-up --steps 200 --every 20
 check dsmc-bkw dsmc-bkw --steps 200 --every 20
-# The tunnel's presets by the names they had before they took the kind's (both builds know them).
-check tunnel-cylinder dsmc-cylinder --steps 60 --every 10
-check tunnel-shock-tube dsmc-shock-tube --steps 150 --every 15
+check dsmc-planar-beams dsmc-planar-beams --steps 200 --every 20
+check tunnel-cylinder tunnel-cylinder --steps 60 --every 10
+check tunnel-shock-tube tunnel-shock-tube --steps 150 --every 15
 
 echo "outputs in $work"
 [ "$failures" -eq 0 ]

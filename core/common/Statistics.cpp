@@ -1,10 +1,11 @@
-// Rayleigh distribution, KS distance and power-law fits (least squares via Eigen).
+// The Maxwell–Boltzmann speed distributions, KS distance and power-law fits (least squares via Eigen).
 #include "Statistics.h"
 
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <stdexcept>
 
 namespace pl {
@@ -18,6 +19,23 @@ double rayleighPdf(double v, double kT, double mass) {
 double rayleighCdf(double v, double kT, double mass) {
     if (v <= 0 || kT <= 0) return 0.0;
     return -std::expm1(-0.5 * mass * v * v / kT);
+}
+
+double maxwellSpeedPdf(double speed, double sigma2, double drift) {
+    if (speed < 0 || sigma2 <= 0) return 0.0;
+    const double sigma = std::sqrt(sigma2);
+    if (drift * drift < 1e-12 * sigma2) // the u → 0 limit
+        return 4.0 * std::numbers::pi * speed * speed * std::pow(2.0 * std::numbers::pi * sigma2, -1.5) *
+               std::exp(-speed * speed / (2.0 * sigma2));
+    const double norm = speed / (drift * std::sqrt(2.0 * std::numbers::pi) * sigma);
+    return norm * (std::exp(-(speed - drift) * (speed - drift) / (2.0 * sigma2)) -
+                   std::exp(-(speed + drift) * (speed + drift) / (2.0 * sigma2)));
+}
+
+double maxwellSpeedCdf(double speed, double sigma2) {
+    if (speed <= 0) return 0.0;
+    const double x = speed / std::sqrt(2.0 * sigma2);
+    return std::erf(x) - 2.0 / std::sqrt(std::numbers::pi) * x * std::exp(-x * x);
 }
 
 double ksDistance(std::vector<double>& sample, const std::function<double(double)>& cdf) {

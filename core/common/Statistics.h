@@ -6,10 +6,18 @@
 
 namespace pl {
 
-// 2D Maxwell–Boltzmann speed pdf (Rayleigh with σ² = kT/m): f(v) = (m v / kT) exp(−m v² / 2kT).
+// Maxwell–Boltzmann speed distributions, one of each, for every kind and test. σ² = kT/m is the variance
+// of one velocity component [speed²]; a caller that has σ² passes kT = σ², mass = 1.
+// In the plane, the speed is Rayleigh distributed: f(v) = (m v / kT) exp(−m v² / 2kT).
 double rayleighPdf(double v, double kT, double mass);
-// Its CDF: F(v) = 1 − exp(−m v² / 2kT).
+// Its CDF: F(v) = 1 − exp(−m v² / 2kT), through expm1 so that the difference of two close speeds keeps
+// its digits (the bins of a KL divergence).
 double rayleighCdf(double v, double kT, double mass);
+// In space, the density of |v| of a Maxwellian of σ² drifting at speed drift: f(s) = s / (u √(2π) σ)
+// [exp(−(s − u)²/2σ²) − exp(−(s + u)²/2σ²)]; drift = 0 is Maxwell's 4π s² (2π σ²)^(−3/2) exp(−s²/2σ²).
+double maxwellSpeedPdf(double speed, double sigma2, double drift = 0.0);
+// Maxwell's speed CDF in space (no drift): erf(x) − (2/√π) x e^(−x²), x = s / √(2σ²).
+double maxwellSpeedCdf(double speed, double sigma2);
 
 // Kolmogorov–Smirnov distance sup |F_N(v) − F(v)| of a sample against a fully specified CDF.
 // Sorts its argument.

@@ -3,6 +3,7 @@
 #include "DsmcModel.h"
 #include "DsmcSeries.h"
 #include "DsmcTheory.h"
+#include "common/Statistics.h"
 
 #include <cmath>
 #include <limits>
@@ -84,7 +85,7 @@ DsmcObservables DsmcModel::observe() const {
             if (counts[b] == 0) continue;
             const double p = counts[b] * inv;
             const auto cdf = [planar, s2](double c) {
-                return planar ? 1.0 - std::exp(-c * c / (2.0 * s2)) : dsmc::maxwellSpeedCdf(c, s2);
+                return planar ? rayleighCdf(c, s2, 1.0) : maxwellSpeedCdf(c, s2);
             };
             const double q = cdf((b + 1) * width) - cdf(b * width);
             o.klDivergence += p * std::log(p / std::max(q, 1e-300));
@@ -175,9 +176,7 @@ std::vector<NamedHistogram> DsmcModel::histograms() const {
             return v / sigma2 * std::exp(-(v - drift) * (v - drift) / (2 * sigma2)) * scaledI0;
         };
     else
-        speed.theoryDensity = [sigma2, drift](double v) {
-            return dsmc::maxwellianSpeedPdf(v, sigma2, drift);
-        };
+        speed.theoryDensity = [sigma2, drift](double v) { return maxwellSpeedPdf(v, sigma2, drift); };
     const double ux = o.ux;
     vx.theoryDensity = [sigma2, ux](double v) {
         return std::exp(-(v - ux) * (v - ux) / (2 * sigma2)) / std::sqrt(2 * std::numbers::pi * sigma2);
