@@ -7,6 +7,7 @@
 #include "catalog/ModelCatalog.h"
 #include "common/AtomicFile.h"
 #include "common/PresetMigration.h"
+#include "common/StopRequest.h"
 #include "common/ThreadGovernor.h"
 #include "common/TimeSeries.h"
 #include "gas/GasModel.h"
@@ -254,6 +255,7 @@ int runSimulation(const RunOptions& options) {
         std::cerr << "particlelab-cli: " << e.what() << "\n";
         return kCannotWrite;
     }
+    const auto setUpStart = Clock::now();
     if (const int refused =
             prepareOrRefuse(options.preset, options.sets, options.seed, options.backend, model))
         return refused;
@@ -290,8 +292,10 @@ int runSimulation(const RunOptions& options) {
             surface.append(*model, row);
         };
         sample();
+        InterruptibleStepper stepper(*model, secondsSince(setUpStart));
         for (long long s = 1; s <= steps && !model->failure() && !stop.caught(); ++s) {
-            model->step();
+            if (!stepper.step())
+                break; // a signal undid the step half way: the run ends at the last whole one
             if (!model->failure() && (s % every == 0 || s == steps)) sample();
             progress.update(s);
         }
@@ -326,7 +330,9 @@ int runSimulation(const RunOptions& options) {
     }
     if (const int signal = stop.caught()) {
         std::cerr << "particlelab-cli: stopped by " << StopSignals::name(signal) << " at step "
-                  << model->stepCount() << "; the " << sampled << " rows sampled until then are kept\n";
+                  << model->stepCount() << "; the " << sampled
+                  << (sampled == 1 ? " row sampled until then is kept\n"
+                                   : " rows sampled until then are kept\n");
         return StopSignals::exitCode(signal);
     }
     return kOk;

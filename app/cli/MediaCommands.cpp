@@ -13,6 +13,7 @@
 #include "SimulationController.h"
 #include "catalog/ModelCatalog.h"
 #include "common/AtomicFile.h"
+#include "common/StopRequest.h"
 #include "plots/SeriesPlot.h"
 #include "plots/SeriesPlotSpecs.h"
 #include "record/ClipFrames.h"
@@ -31,6 +32,11 @@ namespace pl::cli {
 namespace {
 
 using Clock = std::chrono::steady_clock;
+
+double secondsSince(Clock::time_point start) {
+    return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
 constexpr long long kReportDefaultSteps = 1000; // as `run`
 constexpr long long kReportSamples = 400;       // rows of the report's plots over the run
 
@@ -150,7 +156,9 @@ int recordClip(const RecordOptions& options) {
         return kBadInput;
     }
     std::unique_ptr<Model> built;
+    const auto setUpStart = Clock::now();
     if (const int refused = buildForOutput(options, built)) return refused;
+    const double setUpSeconds = secondsSince(setUpStart);
     const std::string kind = built->kind();
     if (!options.plot.empty() && !plotSpec(kind, options.plot)) {
         std::cerr << "particlelab-cli: --plot '" << options.plot << "' is no plot of a " << kind
@@ -186,10 +194,11 @@ int recordClip(const RecordOptions& options) {
         ui::ClipWriter encoder(options.out, width, height, options.fps,
                                ui::colourScaleHints(model.sceneView()));
         codec = encoder.codecDescription();
+        InterruptibleStepper stepper(model, setUpSeconds);
         for (long long frame = 0; frame < frames; ++frame) {
             if (frame > 0)
                 for (long long s = 0; s < options.stepsPerFrame && !model.failure() && !stop.caught(); ++s)
-                    model.step();
+                    stepper.step(); // a step undone by a signal leaves the last whole one to finish on
             if (stop.caught()) break;
             model.checkHealthNow();
             if (model.failure()) break; // no frame of an exploded state
@@ -220,7 +229,7 @@ int recordClip(const RecordOptions& options) {
                   << " frames written before are kept\n";
         exitCode = kModelFailed;
     }
-    const double wall = std::chrono::duration<double>(Clock::now() - start).count();
+    const double wall = secondsSince(start);
     if (exitCode != kOk) return exitCode;
     if (auto failure = model.failure()) {
         std::cerr << "particlelab-cli: the model stopped: " << failure->message() << "; the clip '"
@@ -249,7 +258,9 @@ int writeReport(const ReportOptions& options) {
         return kBadInput;
     }
     std::unique_ptr<Model> built;
+    const auto setUpStart = Clock::now();
     if (const int refused = buildForOutput(options, built)) return refused;
+    const double setUpSeconds = secondsSince(setUpStart);
     const long long planned = built->plannedSteps();
     const long long steps = options.steps.value_or(planned > 0 ? planned : kReportDefaultSteps);
     const std::string kind = built->kind();
@@ -259,10 +270,11 @@ int writeReport(const ReportOptions& options) {
     ui::SimulationController controller;
     controller.adopt(std::move(built));
     Model& model = *controller.model();
+    InterruptibleStepper stepper(model, setUpSeconds);
     stop.runStarts(); // a signal stops the run after its step; the report shows what was run
     const long long every = std::max(1LL, steps / kReportSamples);
     for (long long s = 1; s <= steps && !model.failure() && !stop.caught(); ++s) {
-        model.step();
+        if (!stepper.step()) break; // undone half way by a signal: the report ends at the last whole step
         if (s % every == 0 || s == steps) controller.sample();
     }
     const QString problem = ui::exportLabReport(controller, QString::fromStdString(described.name),

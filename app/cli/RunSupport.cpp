@@ -1,6 +1,7 @@
 // Signal handling and the streamed time series (and body forces) of the CLI's run.
 #include "RunSupport.h"
 
+#include "common/StopRequest.h"
 #include "common/TimeSeries.h"
 
 #include <algorithm>
@@ -31,6 +32,7 @@ extern "C" void onStopSignal(int signal) {
         ::_exit(128 + signal);
     }
     caughtSignal = signal;
+    requestStop(); // a step of minutes polls it and is undone (common/StopRequest.h)
 }
 
 struct sigaction previous[2];
@@ -60,6 +62,7 @@ std::vector<std::size_t> forceColumnsIn(const std::vector<std::string>& seriesCo
 
 StopSignals::StopSignals() {
     caughtSignal = 0;
+    withdrawStopRequest();
     settingUp = 1;
     struct sigaction action {};
     action.sa_handler = onStopSignal;

@@ -107,7 +107,12 @@ public:
         if (failure_) return;
         const double h = signedStep();
         stepThreads_.beginStep(backend() == "cpu");
-        advance(h);
+        try {
+            advance(h);
+        } catch (...) { // a step abandoned half way (StopRequest.h): the clock stands, the caller restores
+            stepThreads_.endStep();
+            throw;
+        }
         stepThreads_.endStep();
         if (failure_) return;
         ++step_;

@@ -2,6 +2,7 @@
 #include "DsmcModel.h"
 
 #include "common/Philox.h"
+#include "common/StopRequest.h"
 
 #include <cmath>
 #include <sstream>
@@ -127,7 +128,9 @@ void DsmcModel::advance(double /*h*/) { // h = dt: collisions run forwards only
     collisionsThisStep_ = 0;
     const double m = params_.mass();
     const auto stream = static_cast<std::uint32_t>(stepCount());
+    constexpr long long kPollEvery = 1 << 16; // candidates between looks at a stop request: ~1 ms
     for (long long c = 0; c < candidates_; ++c) {
+        if (c % kPollEvery == 0) leaveIfAbandoning(); // a step of 67 M molecules takes many seconds
         const Philox4x32 w =
             randomWords(seed_, RngPurpose::Collision, stream, 2 * static_cast<std::uint64_t>(c));
         // A random distinct pair.

@@ -1,13 +1,15 @@
 // The DSMC parameter table: units, ranges, tooltips, and which values act at once.
 #include "DsmcParams.h"
 #include "MolecularParams.h"
+#include "common/MemoryBudget.h"
 
 #include <sstream>
 
 namespace pl {
 
 namespace {
-constexpr double kMaxParticles = 1 << 26; // 67 M: 32 bytes each
+constexpr double kMaxParticles = 1 << 26;  // 67 M: 32 bytes each
+constexpr double kBytesPerParticle = 32.0; // velocities and origin (measured: 26 B each from 1 M to 4 M)
 
 // The molecule (the table the wind tunnel shares, MolecularParams.h): the mass with the cell, the
 // cross-section model in a section of its own; the defaults are O2, and the write-up's σ is used as written.
@@ -28,6 +30,11 @@ void DsmcParams::validate() const {
     if (static_cast<double>(n) > kMaxParticles)
         throw ParamError("count_a", std::to_string(n) + " particles exceed the limit of " +
                                         std::to_string(static_cast<long long>(kMaxParticles)));
+    requireMemory({static_cast<double>(n) * kBytesPerParticle, "count_a", [](double fitting) {
+                       return "use at most " +
+                              std::to_string(static_cast<long long>(fitting / kBytesPerParticle)) +
+                              " particles ({count_a} + {count_b})";
+                   }});
     if (velocityComponents != 2 && velocityComponents != 3)
         throw ParamError("velocity_components",
                          "'{velocity_components}' must be 2 (in the plane) or 3 (in space), not " +

@@ -2,6 +2,8 @@
 #include "FluidModel.h"
 #include "FluidSpawnGrid.h"
 
+#include "common/StopRequest.h"
+
 #include <algorithm>
 #include <cmath>
 #include <numeric>
@@ -61,6 +63,8 @@ fluid::WallJitter FluidModel::wallJitter() const {
     return {seed_, static_cast<std::uint64_t>(stepCount()), kJitterOverH * params_.h};
 }
 
+// A stop request may end the step between the solver's passes (common/StopRequest.h): a step of
+// millions of particles takes seconds.
 void FluidModel::advance(double /*h*/) { // h = dt: the fluid runs forwards only
     advanceBodies();
     applyExternalForcesAndPredict();
@@ -69,6 +73,7 @@ void FluidModel::advance(double /*h*/) { // h = dt: the fluid runs forwards only
     errorMean_.assign(iterations, 0.0);
     errorMax_.assign(iterations, 0.0);
     for (std::size_t k = 0; k < iterations; ++k) {
+        leaveIfAbandoning();
         computeLambdas(k);
         applyPositionCorrections();
     }

@@ -2,6 +2,7 @@
 #include "GasParams.h"
 
 #include "GasIntegratorTable.h"
+#include "common/MemoryBudget.h"
 
 #include <algorithm>
 #include <cmath>
@@ -14,7 +15,7 @@ namespace pl {
 namespace {
 
 constexpr double kMaxAreaFraction = 0.9; // beyond this the disks cannot be placed, even on a lattice
-constexpr double kBytesPerDisk = 240.0;
+constexpr double kBytesPerDisk = 240.0;  // SoA state, accumulators, cell list and sorted copies
 constexpr double kMaxDisks =
     1
     << 26; // upper bound of every count field (67 M)  // SoA state, accumulators, cell list and sorted copies
@@ -219,23 +220,18 @@ const std::vector<ParamSpec>& GasParams::describe() {
     return s;
 }
 
-double GasParams::defaultMemoryBudget() {
-    const double pages = static_cast<double>(::sysconf(_SC_PHYS_PAGES));
-    const double pageSize = static_cast<double>(::sysconf(_SC_PAGE_SIZE));
-    return pages > 0 && pageSize > 0 ? 0.5 * pages * pageSize : 1e18;
-}
-
-void GasParams::validate(double memoryBudget) const {
+void GasParams::validate() const {
     const long long n = totalCount();
     if (n > maxParticles)
         throw ParamError("count_a", "{count_a} + {count_b} = " + std::to_string(n) +
                                         " exceeds {max_particles} = " + std::to_string(maxParticles));
-    if (n * kBytesPerDisk > memoryBudget)
-        throw ParamError("count_a",
-                         std::to_string(n) + " disks need about " + number(n * kBytesPerDisk / 1e9) +
-                             " GB, more than the " + number(memoryBudget / 1e9) +
-                             " GB allowed (half the physical memory): at most " +
-                             std::to_string(static_cast<long long>(memoryBudget / kBytesPerDisk)) + " disks");
+    // Spawning may fill the gas up to its cap, so the cap's disks must fit.
+    requireMemory({static_cast<double>(maxParticles) * kBytesPerDisk, "max_particles", [n](double fitting) {
+                       const auto most = static_cast<long long>(fitting / kBytesPerDisk);
+                       return most >= n ? "use {max_particles} ≤ " + std::to_string(most)
+                                        : "use at most " + std::to_string(most) +
+                                              " disks ({count_a} + {count_b}, and {max_particles})";
+                   }});
     if (pistonEnabled && !(pistonX > left() + maxDiameter() && pistonX <= 0.5 * boxWidth))
         throw ParamError("piston_x", "'{piston_x}' = " + number(pistonX) + " must lie inside the box, in (" +
                                          number(left() + maxDiameter()) + ", " + number(0.5 * boxWidth) +

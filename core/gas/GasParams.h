@@ -73,10 +73,9 @@ struct GasParams {
     static const std::vector<ParamField<GasParams>>& fields();
     static const std::vector<ParamSpec>& describe();
 
-    // Cross-field checks (the disks fit in the box and in memory, the piston lies in the box).
-    // Throws ParamError naming the key. memoryBudget [bytes] defaults to half the physical memory.
-    void validate(double memoryBudget = defaultMemoryBudget()) const;
-    static double defaultMemoryBudget();
+    // Cross-field checks (the disks fit in the box, the cap's disks in memory (common/MemoryBudget.h), the
+    // piston lies in the box). Throws ParamError naming the key.
+    void validate() const;
 };
 
 } // namespace pl

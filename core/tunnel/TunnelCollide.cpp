@@ -5,6 +5,7 @@
 #include "TunnelModel.h"
 
 #include "common/Parallel.h"
+#include "common/StopRequest.h"
 
 #include <algorithm>
 #include <cmath>
@@ -152,6 +153,7 @@ void TunnelModel::collide(double h) {
     };
 #pragma omp parallel for schedule(dynamic, 64) reduction(+ : accepted) if (parallel)
     for (std::size_t c = 0; c < cells; ++c) {
+        if (abandoningStep()) continue; // the step is undone: skip the rest (common/StopRequest.h)
         const std::uint32_t first = cellStart_[c];
         const std::uint32_t count = cellStart_[c + 1] - first;
         if (count < 2 || openFraction_[c] <= 0.0) continue;

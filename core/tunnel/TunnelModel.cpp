@@ -2,6 +2,8 @@
 // collide, sample), the parameters' and bodies' edits and the piston.
 #include "TunnelModel.h"
 
+#include "common/StopRequest.h"
+
 #include <algorithm>
 #include <cmath>
 #include <numeric>
@@ -130,6 +132,7 @@ void TunnelModel::refreshOpenFraction() {
 }
 
 void TunnelModel::reset() {
+    moleculeLimit_ = params_.moleculeLimit();
     refreshCollisionModel();
     restartClock();
     restBodies();
@@ -218,20 +221,25 @@ void TunnelModel::sampleStep(double h) {
 // << 32 + k); the inflow TunnelInflow (side << 28 | entering index, step << 32 + k); NTC
 // TunnelCollision (cell, step << 32 + 2³¹ + 2 · candidate (+1 for the angles)); the initial gas and
 // spawned rectangles TunnelFill (cell, call << 32 + k).
+// A stop request may end the step between phases, and the move and the collisions skip what is left of
+// their loops (common/StopRequest.h): a step of 67 M molecules takes minutes.
 void TunnelModel::advance(double h) {
     advanceBodies(h);
     moveParticles(h);
+    leaveIfAbandoning();
     admitInflow(h);
+    leaveIfAbandoning();
     constexpr std::int64_t kReorderInterval = 16;
     sortIntoCells(stepCount() % kReorderInterval == 0);
+    leaveIfAbandoning();
     collide(h);
+    leaveIfAbandoning();
     sampleStep(h);
 }
 
 void TunnelModel::afterStep() {
     stateEdited();
-    if (static_cast<double>(state_.size()) > TunnelParams::maxParticles())
-        failTooManyMolecules(state_.size());
+    if (static_cast<double>(state_.size()) > moleculeLimit_) failTooManyMolecules(state_.size());
 }
 
 void TunnelModel::adoptDeviceCells(const std::vector<std::uint32_t>& cellStart,
@@ -246,8 +254,9 @@ void TunnelModel::adoptDeviceCells(const std::vector<std::uint32_t>& cellStart,
 }
 
 void TunnelModel::failTooManyMolecules(std::size_t count) {
-    fail(std::to_string(count) + " molecules exceed the limit of " +
-             formatNumber(TunnelParams::maxParticles(), 3),
+    const bool memory = moleculeLimit_ < TunnelParams::maxParticles();
+    fail(std::to_string(count) + " molecules exceed the limit of " + formatNumber(moleculeLimit_, 3) +
+             (memory ? ", what this machine's memory held at the start" : ""),
          withKeys("the inflow and the bodies packed more gas into the tunnel than it can hold: raise {fn}"));
 }
 

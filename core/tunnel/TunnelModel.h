@@ -123,8 +123,10 @@ public:
 protected:
     void advance(double h) override; // move, inflow, sort, collide, sample (TunnelModel.cpp)
     void afterStep() override;       // the molecule limit
-    // Fails the step: count molecules are more than TunnelParams::maxParticles().
+    // Fails the step: count molecules are more than moleculeLimit().
     void failTooManyMolecules(std::size_t count);
+    // TunnelParams::moleculeLimit() at the reset: the memory the run planned for.
+    double moleculeLimit() const { return moleculeLimit_; }
     // A GPU backend resets once itself, after its buffers exist.
     explicit TunnelModel(DeferReset) {}
     // A backend that samples elsewhere (the GPU) hands its cell sums, body impulses and collision
@@ -202,6 +204,7 @@ protected:
     mutable std::vector<double> remainder_; // NTC fractional candidates per cell
     std::vector<double> inflowRemainder_;   // fractional entering particles per side
     mutable double sigmaCrMax_ = 0.0;
+    double moleculeLimit_ = TunnelParams::maxParticles();
     double pistonX_ = 0.0;
     PistonDrive pistonDrive_;
     std::int64_t sampleFrom_ = 0;              // first step of the window

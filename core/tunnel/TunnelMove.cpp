@@ -5,6 +5,7 @@
 #include "TunnelModel.h"
 
 #include "common/Parallel.h"
+#include "common/StopRequest.h"
 
 #include <algorithm>
 #include <cmath>
@@ -261,6 +262,7 @@ void TunnelModel::moveParticles(double h) {
     const tunnel::BodyFrame* const frames = frames_.data();
 #pragma omp parallel for schedule(static) if (parallel)
     for (std::size_t c = 0; c < chunks; ++c) {
+        if (abandoningStep()) continue; // the step is undone: skip the rest (common/StopRequest.h)
         double* impulse = bodies > 0 ? impulseChunks_.data() + c * 2 * bodies : nullptr;
         const std::size_t end = std::min(n, (c + 1) * kChunk);
         for (std::size_t i = c * kChunk; i < end; ++i) {

@@ -1,7 +1,11 @@
 // The wind tunnel's parameter table: units, ranges, tooltips, which values act at once, and the
 // cross-field checks.
 #include "TunnelParams.h"
+#include "common/MemoryBudget.h"
 #include "dsmc/MolecularParams.h"
+
+#include <algorithm>
+#include <cmath>
 
 #include <string>
 #include <tuple>
@@ -9,11 +13,22 @@
 namespace pl {
 
 namespace {
-constexpr double kMaxCells = 1 << 22; // 4 M cells: the per-cell arrays stay below ~200 MB
+constexpr double kMaxCells = 1 << 22; // 4 M cells: the per-cell arrays stay below ~500 MB
+// State, cell order and sort scratch (measured: 67–70 B a molecule from 0.05 M to 4.7 M molecules).
+constexpr double kBytesPerMolecule = 72.0;
+// NTC state, open fractions, the sampler's sums (measured: about 100 B a cell from 40 k to 640 k cells).
+constexpr double kBytesPerCell = 128.0;
 } // namespace
 
 double TunnelParams::maxParticles() {
     return 1 << 26; // 67 M molecules: 44 bytes each, 3 GB
+}
+
+double TunnelParams::moleculeLimit() const {
+    const double cells = static_cast<double>(cellsX) * static_cast<double>(cellsY);
+    const double room =
+        (kUsableMemoryShare * availableMemoryBytes() - cells * kBytesPerCell) / kBytesPerMolecule;
+    return std::max(0.0, std::min(maxParticles(), std::floor(room)));
 }
 
 double TunnelParams::mass() const {
@@ -25,13 +40,22 @@ void TunnelParams::validate() const {
         throw ParamError("cells_x", "{cells_x} × {cells_y} = " + std::to_string(cellsX * cellsY) +
                                         " cells exceed the limit of " +
                                         std::to_string(static_cast<long long>(kMaxCells)));
+    const double cells = static_cast<double>(cellsX) * static_cast<double>(cellsY);
+    requireMemory({cells * kBytesPerCell, "cells_x", [](double fitting) {
+                       return "use at most " + formatNumber(fitting / kBytesPerCell, 3) +
+                              " cells ({cells_x} × {cells_y})";
+                   }});
     // The free stream filling the whole domain must fit (the count settles near it in a tunnel).
     const double fill = streamDensity * boxWidth * boxHeight / fn;
-    if (!(fill <= maxParticles()))
-        throw ParamError("fn", "the free stream fills the domain with " + formatNumber(fill, 3) +
-                                   " molecules, more than the limit of " + formatNumber(maxParticles(), 3) +
-                                   "; raise {fn} to at least " +
-                                   formatNumber(streamDensity * boxWidth * boxHeight / maxParticles(), 3));
+    const double limit = moleculeLimit();
+    if (!(fill <= limit))
+        throw ParamError(
+            "fn",
+            "the free stream fills the domain with " + formatNumber(fill, 3) + " molecules, more than " +
+                (limit < maxParticles() ? "the " + formatNumber(limit, 3) + " this machine's memory holds now"
+                                        : "the limit of " + formatNumber(limit, 3)) +
+                "; raise {fn} to at least " +
+                formatNumber(streamDensity * boxWidth * boxHeight / std::max(limit, 1.0), 3));
     // A periodic side hands its particles to the opposite side, which must then take them in.
     if ((left == TunnelBoundary::Periodic) != (right == TunnelBoundary::Periodic))
         throw ParamError(left == TunnelBoundary::Periodic ? "right" : "left",

@@ -75,10 +75,13 @@ struct TunnelParams {
 
     double mass() const;          // [kg]
     static double maxParticles(); // molecules a run may hold
+    // maxParticles(), or fewer where the memory this machine can give the run now ends first
+    // (common/MemoryBudget.h).
+    double moleculeLimit() const;
     double cellWidth() const { return boxWidth / double(cellsX); }
     double cellHeight() const { return boxHeight / double(cellsY); }
     // Cross-field checks (periodic sides in pairs, the piston with a left side that is not periodic, the
-    // free-stream fill within maxParticles()); throws ParamError naming the key.
+    // free-stream fill within moleculeLimit(), the cells in memory); throws ParamError naming the key.
     void validate() const;
 
     static const std::vector<ParamField<TunnelParams>>& fields();

@@ -439,6 +439,37 @@ private slots:
         QVERIFY(clock.elapsed() < 10000);
     }
 
+    // Under a 1 GiB address-space limit, a state that could not fit is refused before anything is built,
+    // naming the parameter and a value that fits, instead of ending in an allocation failure.
+    void runsThatDoNotFitInMemoryAreRefused_data() {
+        QTest::addColumn<QStringList>("sets");
+        QTest::addColumn<QString>("advice");
+        QTest::newRow("gas cap") << QStringList{"gas-classroom", "--set", "max_particles=20000000"}
+                                 << "use max_particles ≤";
+        QTest::newRow("fluid cap") << QStringList{"fluid-write-up", "--set", "max_particles=10000000"}
+                                   << "use max_particles ≤";
+        QTest::newRow("dsmc count") << QStringList{"dsmc-write-up", "--set", "count_a=60000000"}
+                                    << "particles (count_a + count_b)";
+        QTest::newRow("tunnel molecules")
+            << QStringList{"tunnel-cylinder", "--set", "fn=5e11"} << "raise fn to at least";
+    }
+    void runsThatDoNotFitInMemoryAreRefused() {
+        QFETCH(QStringList, sets);
+        QFETCH(QString, advice);
+        QTemporaryDir dir;
+        const QString series = dir.filePath("s.csv");
+        QProcess p;
+        p.start("/bin/sh",
+                QStringList{"-c", "ulimit -v 1048576 && exec \"$0\" \"$@\"", PARTICLELAB_CLI, "run"} + sets +
+                    QStringList{"--steps", "1", "--threads", "1", "--quiet", "--out", series});
+        QVERIFY(p.waitForFinished(60000));
+        const QString err = QString::fromUtf8(p.readAllStandardError());
+        QCOMPARE(p.exitStatus(), QProcess::NormalExit);
+        QVERIFY2(p.exitCode() == 2, qPrintable(err));
+        QVERIFY2(err.contains("memory") && err.contains(advice), qPrintable(err));
+        QVERIFY(!QFile::exists(series));
+    }
+
     // A file larger than a preset or snapshot may be is refused before it is read, naming the bound.
     void hugeInputFilesAreRefusedBeforeTheyAreRead() {
         QTemporaryDir dir;

@@ -243,6 +243,34 @@ private slots:
         QVERIFY(!QFile::exists(series));
     }
 
+    // A step of 4.7 M molecules takes seconds: SIGINT in the middle of it undoes the step and ends the run
+    // within a second, at the last whole step, with its rows (before: the signal waited for the step).
+    void aSignalEndsALongStepWithinASecond() {
+        QTemporaryDir dir;
+        const QString series = dir.filePath("series.csv");
+        QProcess p;
+        p.start(PARTICLELAB_CLI,
+                {"run", "tunnel-cylinder", "--set", "fn=5e12", "--set", "vhs_d_ref=5.3e-9", "--steps", "3",
+                 "--every", "1", "--threads", "1", "--backend", "cpu", "--quiet", "--out", series});
+        QVERIFY(p.waitForStarted());
+        QElapsedTimer clock;
+        clock.start();
+        while (readLines(series).size() < 2 && clock.elapsed() < 60000) QTest::qWait(20); // the set-up's row
+        QCOMPARE(readLines(series).size(), 2);
+        QTest::qWait(300); // well inside the first step
+        QCOMPARE(p.state(), QProcess::Running);
+        ::kill(static_cast<pid_t>(p.processId()), SIGINT);
+        QElapsedTimer stopping;
+        stopping.start();
+        QVERIFY(p.waitForFinished(60000));
+        const qint64 ms = stopping.elapsed();
+        const QString err = QString::fromUtf8(p.readAllStandardError());
+        QCOMPARE(p.exitCode(), 130);
+        QVERIFY2(ms < 1000, qPrintable(QString("the run took %1 ms to stop").arg(ms)));
+        QVERIFY2(err.contains("stopped by SIGINT at step 0") && err.contains("the 1 row sampled"), qPrintable(err));
+        QCOMPARE(readLines(series).size(), 2);
+    }
+
     // A run resumed from a snapshot taken with the fields window open writes the fields, the forces and
     // the rows of the run that never stopped (before: every cell NaN, drag_avg and sampled_steps from 0,
     // no drag in the first row).

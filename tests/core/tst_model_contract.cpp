@@ -10,6 +10,7 @@
 #include "BackendRows.h"
 #include "catalog/ModelCatalog.h"
 #include "common/Snapshot.h"
+#include "common/StopRequest.h"
 #include "contract/BallisticKind.h"
 #include "gl/GpuModels.h"
 
@@ -173,6 +174,44 @@ private slots:
         QCOMPARE(restored.time(), model.time());
         QVERIFY2(particles(restored) == particles(model), "the trajectories parted");
         sameRow(model, model.sampleSeries(), restored.sampleSeries());
+    }
+
+    // A stop request during a step that may be undone (InterruptibleStepper after a long set-up) ends
+    // it half way: every built-in CPU kind polls for it, and the model is back at the step's start, so the
+    // run continues bit for bit as the one that was never interrupted. A kind that does not poll
+    // finishes the step. GPU rows keep the clock consistent either way.
+    void aStopRequestUndoesTheStepItInterrupts_data() {
+        kindsAndBackends();
+    }
+    void aStopRequestUndoesTheStepItInterrupts() {
+        PL_CONTRACT_MODEL(made);
+        const test::BackendModel twinMade = test::modelOnBackend(backend, preset);
+        QVERIFY2(twinMade.model, twinMade.failure.c_str());
+        Model& twin = *twinMade.model;
+        constexpr int kBefore = 5, kAfter = 10;
+        for (int s = 0; s < kBefore; ++s) {
+            model.step();
+            twin.step();
+        }
+        InterruptibleStepper stepper(model, InterruptibleStepper::kKeepAfterSeconds);
+        requestStop();
+        const bool finished = stepper.step();
+        withdrawStopRequest();
+        if (backend == QLatin1String("cpu") && kind != QLatin1String("ballistic"))
+            QVERIFY2(!finished, "the step never looked at the stop request");
+        QCOMPARE(stepper.abandoned(), finished ? 0 : 1);
+        QCOMPARE(model.stepCount(), std::int64_t(finished ? kBefore + 1 : kBefore));
+        QVERIFY(!model.failure());
+        if (finished) twin.step();
+        for (int s = 0; s < kAfter; ++s) {
+            QVERIFY(stepper.step());
+            twin.step();
+        }
+        QCOMPARE(model.stepCount(), twin.stepCount());
+        QCOMPARE(model.time(), twin.time());
+        if (backend != QLatin1String("cpu")) return;
+        QVERIFY2(particles(model) == particles(twin), "the interrupted run parted from the straight one");
+        sameRow(model, model.sampleSeries(), twin.sampleSeries());
     }
 
     // A snapshot whose state holds a non-finite number (a null in the file), or one so large that its

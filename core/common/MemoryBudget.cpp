@@ -1,0 +1,58 @@
+#include "MemoryBudget.h"
+
+#include "InputLimits.h"
+#include "ParamSpec.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <sstream>
+#include <sys/resource.h>
+#include <unistd.h>
+
+namespace pl {
+
+namespace {
+
+// A "Name:   123 kB" line of a /proc file, in bytes; NaN when the file or the line is missing.
+double procKilobytes(const char* file, const std::string& name) {
+    std::ifstream in(file);
+    std::string line;
+    while (std::getline(in, line)) {
+        if (line.compare(0, name.size() + 1, name + ":") != 0) continue;
+        std::istringstream fields(line.substr(name.size() + 1));
+        double kilobytes = 0.0;
+        if (fields >> kilobytes) return kilobytes * 1024.0;
+    }
+    return std::numeric_limits<double>::quiet_NaN();
+}
+
+// The room under a resource limit above what is used of it already; infinite when unlimited.
+double roomUnder(int resource, double used) {
+    rlimit limit{};
+    if (getrlimit(resource, &limit) != 0 || limit.rlim_cur == RLIM_INFINITY)
+        return std::numeric_limits<double>::infinity();
+    return std::max(0.0, static_cast<double>(limit.rlim_cur) - (std::isnan(used) ? 0.0 : used));
+}
+
+} // namespace
+
+double availableMemoryBytes() {
+    double available = procKilobytes("/proc/meminfo", "MemAvailable");
+    if (std::isnan(available)) // not Linux, or a kernel before 3.14: the physical memory
+        available = static_cast<double>(sysconf(_SC_PHYS_PAGES)) * static_cast<double>(sysconf(_SC_PAGESIZE));
+    available = std::min(available, roomUnder(RLIMIT_AS, procKilobytes("/proc/self/status", "VmSize")));
+    return std::min(available, roomUnder(RLIMIT_DATA, procKilobytes("/proc/self/status", "VmData")));
+}
+
+void requireMemory(const MemoryNeed& need) {
+    const double usable = kUsableMemoryShare * availableMemoryBytes();
+    if (!(need.bytes > usable)) return;
+    const auto bytes = [](double b) { return byteSize(static_cast<std::size_t>(std::max(0.0, b))); };
+    throw ParamError(need.key, "{" + need.key + "} lets the run hold about " + bytes(need.bytes) +
+                                   " of memory, more than the " + bytes(usable) +
+                                   " this machine can give it now; " + need.fix(usable));
+}
+
+} // namespace pl
