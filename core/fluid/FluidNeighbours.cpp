@@ -7,6 +7,9 @@
 #include <omp.h>
 
 #include <algorithm>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 namespace pl::fluid {
 
@@ -53,7 +56,24 @@ void Neighbours::search(const double* x, const double* y, std::size_t count, dou
             for (int r = std::max(cy - 1, 0); r <= std::min(cy + 1, ny - 1); ++r) {
                 const std::uint32_t first = start[r * nx + std::max(cx - 1, 0)];
                 const std::uint32_t last = start[r * nx + std::min(cx + 1, nx - 1) + 1];
-                for (std::uint32_t m = first; m < last; ++m) {
+                std::uint32_t m = first;
+#if defined(__SSE2__)
+                // Two candidates per SSE2 compare (each lane the scalar test's operations, so the same
+                // decisions), still written in cell order.
+                const __m128d x2 = _mm_set1_pd(xi), y2 = _mm_set1_pd(yi), reach2x2 = _mm_set1_pd(reach2);
+                for (; m + 2 <= last; m += 2) {
+                    const __m128d dx = _mm_sub_pd(x2, _mm_loadu_pd(sortedX + m));
+                    const __m128d dy = _mm_sub_pd(y2, _mm_loadu_pd(sortedY + m));
+                    const __m128d r2 = _mm_add_pd(_mm_mul_pd(dx, dx), _mm_mul_pd(dy, dy));
+                    const auto within =
+                        static_cast<std::uint32_t>(_mm_movemask_pd(_mm_cmpnge_pd(r2, reach2x2)));
+                    row[std::min(found, capacity)] = m;
+                    found += (within & 1u) & static_cast<std::uint32_t>(m != self);
+                    row[std::min(found, capacity)] = m + 1;
+                    found += (within >> 1) & static_cast<std::uint32_t>(m + 1 != self);
+                }
+#endif
+                for (; m < last; ++m) {
                     const double dx = xi - sortedX[m], dy = yi - sortedY[m];
                     row[std::min(found, capacity)] = m;
                     found += static_cast<std::uint32_t>(!(dx * dx + dy * dy >= reach2) & (m != self));

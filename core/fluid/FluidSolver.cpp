@@ -1,6 +1,7 @@
 // The passes of one PBF step (Macklin & Müller 2013, Algorithm 1). Every loop writes only particle i and
 // reads its neighbours' values from the previous pass (Jacobi), so results do not depend on the thread
 // count and each loop maps onto one GPU dispatch.
+#include "FluidLambdaPass.h"
 #include "FluidModel.h"
 
 #include "common/Parallel.h"
@@ -93,55 +94,38 @@ struct BlockPair {
 // λ_i = −C_i / (Σ_k |∇_k C_i|² + ε) (eq. 11) with ∇_i C_i = Σ_j ∇W_ij / ρ₀ and ∇_j C_i = −∇W_ij / ρ₀ (eq. 8).
 // The pair terms the correction pass needs at these same positions are kept: ∇W_ij per neighbour slot,
 // G_i = Σ_j ∇W_ij and S_i = Σ_j s_corr,ij ∇W_ij, so that pass costs one multiply-add per pair.
-// Two particles per step of the loop, each summing over its own row in row order (FluidKernels.h, Lanes).
+// Two particles per step of the loop, each summing over its own row in row order (FluidKernels.h, Lanes), or
+// two slots of both rows per AVX instruction (FluidLambdaPass.h).
 void FluidModel::computeLambdas(std::size_t iteration) {
     const long long n = loopCount(state_);
-    const double *px = px_.data(), *py = py_.data();
-    double *lambda = lambda_.data(), *constraint = constraint_.data();
-    const std::uint32_t *blockStart = neighbours_.blockStart(), *lanes = neighbours_.laneEntries();
     pairGradX_.resize(neighbours_.laneSlots());
     pairGradY_.resize(neighbours_.laneSlots());
     gradSumX_.resize(state_.size());
     gradSumY_.resize(state_.size());
     scorrSumX_.resize(state_.size());
     scorrSumY_.resize(state_.size());
-    double *pgx = pairGradX_.data(), *pgy = pairGradY_.data();
-    double *sumGx = gradSumX_.data(), *sumGy = gradSumY_.data(), *sumSx = scorrSumX_.data(),
-           *sumSy = scorrSumY_.data();
-    const fluid::LaneKernels k(kernels_, scorr_);
-    const Lanes selfWeight = Lanes::all(kernels_.selfWeight());
-    const Lanes inverseRest = Lanes::all(1.0 / restDensity_), one = Lanes::all(1.0);
-    const Lanes epsilon = Lanes::all(params_.epsilon), zero = Lanes::all(0.0);
+    const fluid::LambdaArrays arrays{px_.data(),
+                                     py_.data(),
+                                     neighbours_.blockStart(),
+                                     neighbours_.laneEntries(),
+                                     lambda_.data(),
+                                     constraint_.data(),
+                                     pairGradX_.data(),
+                                     pairGradY_.data(),
+                                     gradSumX_.data(),
+                                     gradSumY_.data(),
+                                     scorrSumX_.data(),
+                                     scorrSumY_.data(),
+                                     n};
+    const fluid::LambdaConstants constants{fluid::LaneKernels(kernels_, scorr_), kernels_.selfWeight(),
+                                           1.0 / restDensity_, params_.epsilon};
+    const fluid::LambdaBlocksFunction blocks = fluid::lambdaBlocks(); // AVX where the CPU has it
 #pragma omp parallel if (n >= kParallelMinParticles)
-    for (auto [b, end] = neighbours_.threadBlocks(); b < end; ++b) { // equal shares of the slots
-        const BlockPair pair(b, n);
-        const Lanes xi = pair.gather(px), yi = pair.gather(py);
-        Lanes rho = selfWeight, gx = zero, gy = zero, sumSquares = zero, sx = zero, sy = zero;
-        for (std::size_t e = 2 * std::size_t{blockStart[b]}; e < 2 * std::size_t{blockStart[b + 1]}; e += 2) {
-            const std::uint32_t j0 = lanes[e], j1 = lanes[e + 1];
-            const Lanes dx = xi - Lanes::gather(px, j0, j1), dy = yi - Lanes::gather(py, j0, j1);
-            const Lanes r2 = dx * dx + dy * dy;
-            const Lanes w = k.w(r2);
-            const Lanes f = k.gradFactor(r2); // both 0 beyond h
-            const Lanes s = k.artificialPressure(w);
-            const Lanes fx = f * dx, fy = f * dy;
-            rho += w;
-            fx.store(pgx + e);
-            fy.store(pgy + e);
-            gx += fx;
-            gy += fy;
-            sx += s * f * dx;
-            sy += s * f * dy;
-            sumSquares += f * f * r2;
-        }
-        const Lanes c = rho * inverseRest - one;
-        pair.scatter(c, constraint);
-        pair.scatter(-c / ((gx * gx + gy * gy + sumSquares) * inverseRest * inverseRest + epsilon), lambda);
-        pair.scatter(gx, sumGx);
-        pair.scatter(gy, sumGy);
-        pair.scatter(sx, sumSx);
-        pair.scatter(sy, sumSy);
+    {
+        const auto [first, end] = neighbours_.threadBlocks(); // equal shares of the slots
+        blocks(arrays, constants, first, end);
     }
+    const double* constraint = constraint_.data();
     // Serial sums in particle order: the same bits for any thread count.
     const std::uint32_t* rank = neighbours_.rank();
     double sum = 0, largest = 0;

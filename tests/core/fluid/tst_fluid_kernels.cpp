@@ -2,10 +2,14 @@
 // write-up's 3D ones to 315/(256 h) and 3/(2 h); the spiky gradient is the derivative of the spiky kernel and
 // antisymmetric in the pair; s_corr is −k at r = Δq h.
 #include "fluid/FluidKernels.h"
+#include "fluid/FluidLambdaPass.h"
 #include "fluid/FluidParams.h"
 
 #include <QtTest>
+#include <cstring>
 #include <numbers>
+#include <random>
+#include <vector>
 
 using namespace pl;
 
@@ -99,6 +103,73 @@ private slots:
         QVERIFY(std::abs(s(k.w(dq * dq)) + 0.001) < 1e-15);
         QVERIFY(s(k.w(0.9 * 0.9)) > -0.001 && s(k.w(0.9 * 0.9)) < 0); // weaker further out
         QCOMPARE(s(0.0), 0.0);
+    }
+
+    // The λ pass in AVX (two slots of a block per instruction) gives the SSE2 pass's bits: blocks of 0 to 9
+    // slots (odd and even, so the AVX loop's one-slot tail runs), padded slots (the particle itself),
+    // pairs inside and beyond h, a coincident pair, an odd particle count, with and without s_corr.
+    void lambdaPassAvxGivesTheSse2Bits_data() {
+        QTest::addColumn<double>("scorrK");
+        QTest::newRow("s_corr on") << 0.001;
+        QTest::newRow("s_corr off") << 0.0;
+    }
+    void lambdaPassAvxGivesTheSse2Bits() {
+        QFETCH(double, scorrK);
+        if (!fluid::lambdaBlocksAvx()) QSKIP("this CPU has no AVX: the SSE2 pass is the only one");
+        const double h = 1.1;
+        const auto kernels = fluid::Kernels::make(h, FluidKernelConstants::Unnormalised3d, false);
+        const double dq = 0.3 * h;
+        const fluid::ArtificialPressure scorr{scorrK, 1.0 / kernels.w(dq * dq), 4};
+        const long long count = 301, blocks = (count + 1) / 2;
+        std::mt19937_64 random(7);
+        std::uniform_real_distribution<double> position(0.0, 1.6); // most pairs within h, some beyond
+        std::vector<double> px(count), py(count);
+        for (long long i = 0; i < count; ++i) px[i] = position(random), py[i] = position(random);
+        px[1] = px[0], py[1] = py[0]; // a coincident pair: r = 0, where every term is 0
+        std::vector<std::uint32_t> blockStart{0}, lanes;
+        for (long long b = 0; b < blocks; ++b) {
+            const auto slotCount = static_cast<std::uint32_t>(b == 0 ? 3 : b % 10);
+            for (std::uint32_t t = 0; t < slotCount; ++t)
+                for (long long lane = 0; lane < 2; ++lane) {
+                    const long long self = std::min(2 * b + lane, count - 1);
+                    const bool padded = random() % 5 == 0;
+                    lanes.push_back(static_cast<std::uint32_t>(padded ? self : random() % count));
+                }
+            blockStart.push_back(blockStart.back() + slotCount);
+        }
+        lanes[0] = 1, lanes[1] = 0; // the first slot of block 0: particles 0 and 1, coincident
+        struct Outputs {
+            std::vector<double> values[8]; // pair gradients x, y; λ, C; G x, y; S x, y
+        };
+        auto run = [&](fluid::LambdaBlocksFunction blocksFunction) {
+            Outputs o;
+            for (int a = 0; a < 8; ++a) o.values[a].assign(a < 2 ? lanes.size() : std::size_t(count), -1.0);
+            const fluid::LambdaArrays arrays{px.data(),
+                                             py.data(),
+                                             blockStart.data(),
+                                             lanes.data(),
+                                             o.values[2].data(),
+                                             o.values[3].data(),
+                                             o.values[0].data(),
+                                             o.values[1].data(),
+                                             o.values[4].data(),
+                                             o.values[5].data(),
+                                             o.values[6].data(),
+                                             o.values[7].data(),
+                                             count};
+            const fluid::LambdaConstants constants{fluid::LaneKernels(kernels, scorr), kernels.selfWeight(),
+                                                   1.0 / 1.3, 100.0};
+            blocksFunction(arrays, constants, 0, blocks);
+            return o;
+        };
+        const Outputs sse2 = run(fluid::lambdaBlocksSse2()), avx = run(fluid::lambdaBlocksAvx());
+        int inside = 0, pairs = 0; // the case has pairs inside h and beyond it
+        for (double g : sse2.values[0]) inside += g != 0.0, ++pairs;
+        QVERIFY(inside > pairs / 3 && inside < pairs);
+        for (int a = 0; a < 8; ++a)
+            QVERIFY2(std::memcmp(sse2.values[a].data(), avx.values[a].data(),
+                                 sse2.values[a].size() * sizeof(double)) == 0,
+                     qPrintable(QString("output array %1 differs").arg(a)));
     }
 };
 

@@ -1,0 +1,47 @@
+// The λ pass's loop over lane-pair blocks (FluidModel::computeLambdas), in two builds: the SSE2 one of
+// common/Lanes.h, and one that evaluates two slots of a block (four pairs) per AVX instruction where the
+// CPU has AVX. The square root and the division set this pass's speed (BENCHMARKS.md, "Limits"), and a
+// 256-bit vsqrtpd or vdivpd costs about what a 128-bit one does. Every pair gets exactly the scalar
+// operations (no FMA: the AVX build does not enable it; AVX square roots and divisions are correctly
+// rounded), and the sums still add slot by slot in row order, so the results are bit-identical to the
+// SSE2 loop and to the scalar code.
+#pragma once
+
+#include "FluidKernels.h"
+
+#include <cstddef>
+#include <cstdint>
+
+namespace pl::fluid {
+
+// What the λ pass reads and writes, in solver numbers.
+struct LambdaArrays {
+    const double* px;
+    const double* py;
+    const std::uint32_t* blockStart;
+    const std::uint32_t* lanes;
+    double* lambda;
+    double* constraint;
+    double* pairGradX;
+    double* pairGradY;
+    double* gradSumX;
+    double* gradSumY;
+    double* scorrSumX;
+    double* scorrSumY;
+    long long count; // particles
+};
+
+struct LambdaConstants {
+    LaneKernels kernels;
+    double selfWeight, inverseRest, epsilon;
+};
+
+// Blocks [first, last) of the pass; lambdaBlocks() picks the build the CPU runs.
+using LambdaBlocksFunction = void (*)(const LambdaArrays&, const LambdaConstants&, long long first,
+                                      long long last);
+LambdaBlocksFunction lambdaBlocks();
+// Each build by name, for the test that compares them: the AVX one is nullptr where the CPU lacks AVX.
+LambdaBlocksFunction lambdaBlocksSse2();
+LambdaBlocksFunction lambdaBlocksAvx();
+
+} // namespace pl::fluid
