@@ -42,8 +42,8 @@ const ModelDescriptor& gasRegistration() {
                                  {"pressure_wall", "P"},
                                  {"time", "t", "", 1.0, 'f', 2}},
                     .plot = "speedHistogram",
-                    .controls = {LessonControl::Heat, LessonControl::ParticleCount, LessonControl::Piston,
-                                 LessonControl::Gravity},
+                    .controls = {LessonControl::Heat, LessonControl::ParticleCount, LessonControl::Gravity,
+                                 LessonControl::Piston},
                     // The strongest gravity makes the scale height kT / (m g) a fifth of the box.
                     .gravityMaximum =
                         [](const ParamValues& values) {

@@ -30,11 +30,13 @@ constexpr double kCountRange = 2.0;    // the particle slider reaches twice the 
 constexpr double kMaxPacking = 0.4;    // … but never past 40 % of the box covered by disks
 constexpr int kViewColumns = 2;        // the field buttons wrap after this many
 
-const char* kStyle = "QPushButton { padding: 10px 8px; }"
+// Large enough to hit on a projector's touch screen, small enough that a 700 px high board holds a
+// readable plot beside four rows of controls.
+const char* kStyle = "QPushButton { padding: 7px 8px; }"
                      "QPushButton:checked { background: #2a5aaa; color: white; }"
-                     "QSlider { min-height: 44px; }"
-                     "QSlider::groove:horizontal { height: 12px; background: #c8c8c8; border-radius: 6px; }"
-                     "QSlider::handle:horizontal { width: 40px; margin: -14px 0; border-radius: 20px;"
+                     "QSlider { min-height: 36px; }"
+                     "QSlider::groove:horizontal { height: 10px; background: #c8c8c8; border-radius: 5px; }"
+                     "QSlider::handle:horizontal { width: 34px; margin: -12px 0; border-radius: 17px;"
                      " background: #2a5aaa; }";
 
 double number(const ParamValues& values, const std::string& key, double fallback) {
@@ -175,8 +177,11 @@ QSlider* LessonControls::addSlider(QVBoxLayout* group, const QString& title, QLa
 }
 
 void LessonControls::addRunRow() {
+    // Half a row: the first control of the scene takes the other half.
+    QVBoxLayout* group = addCell();
+    group->addStretch(1);
     auto* row = new QHBoxLayout;
-    addRow()->addLayout(row);
+    group->addLayout(row);
     run_ = addButton(row, tr("Run"), "lessonRun");
     connect(run_, &QPushButton::clicked, controller_, &SimulationController::togglePlay);
     connect(addButton(row, tr("Reset"), "lessonReset"), &QPushButton::clicked, controller_,

@@ -17,6 +17,7 @@
 #include <QSettings>
 #include <QToolButton>
 #include <QVBoxLayout>
+#include <qcustomplot.h>
 
 namespace pl::ui {
 
@@ -113,7 +114,9 @@ void PresentPanel::showPlot(int item) {
     }
     if (!plot_) return;
     plot_->setObjectName("presentPlot");
-    plot_->setMinimumHeight(kPlotMinimumHeight);
+    // The drawing itself keeps a readable height, whatever controls the plot has above it.
+    for (QCustomPlot* canvas : plot_->findChildren<QCustomPlot*>())
+        canvas->setMinimumHeight(kPlotMinimumHeight);
     plotBox_->addWidget(plot_);
     plot_->show();
 }
