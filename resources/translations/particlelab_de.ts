@@ -2027,10 +2027,6 @@ Wirkt nach „Zurücksetzen“.</translation>
         <translation>Zurücksetzen</translation>
     </message>
     <message>
-        <source>Volume</source>
-        <translation>Volumen</translation>
-    </message>
-    <message>
         <source>Piston</source>
         <translation>Kolben</translation>
     </message>

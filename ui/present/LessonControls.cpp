@@ -226,8 +226,7 @@ void LessonControls::addParticleCount(QVBoxLayout* group) {
 }
 
 void LessonControls::addPistonGroup(QVBoxLayout* drive, QVBoxLayout* toggle) {
-    auto* name = new QLabel(tr("Volume"), body_);
-    toggle->addWidget(name);
+    toggle->addStretch(1);
     auto* toggleRow = new QHBoxLayout;
     toggle->addLayout(toggleRow);
     pistonSwitch_ = addButton(toggleRow, tr("Piston"), "lessonPistonSwitch");

@@ -23,7 +23,7 @@ namespace pl::ui {
 
 namespace {
 constexpr double kPanelFontScale = 1.35;
-constexpr int kPlotMinimumHeight = 150; // readable; a taller window gives the plot the rest
+constexpr int kPlotMinimumHeight = 170; // readable; a taller window gives the plot the rest
 constexpr int kChooserCharacters = 12;  // the chooser may be narrower than its longest title
 const char* kRecordStyle = "QToolButton { padding: 6px 8px; }"
                            "QToolButton:checked { background: #c0392b; color: white; font-weight: bold; }";
