@@ -7,6 +7,7 @@
 #include "ShortcutGuard.h"
 #include "SimulationController.h"
 #include "ViewportRoom.h"
+#include "WindowFit.h"
 #include "panels/ParameterPanel.h"
 #include "plots/DistributionPlot.h"
 #include "plots/ProfilePlot.h"
@@ -31,6 +32,7 @@
 #include <QSettings>
 #include <QStatusBar>
 #include <QTimer>
+#include <qcustomplot.h>
 
 namespace pl::ui {
 
@@ -38,7 +40,20 @@ namespace {
 constexpr double kProjectorFontScale = 1.6;
 constexpr int kStatusIntervalMs = 250;
 // Small enough that at 1024 px the plots leave the viewport its room; axes and legends still fit.
-constexpr QSize kPlotMinimum(280, 200);
+constexpr int kPlotMinimumWidth = 280;
+// Below ViewportRoom::kReadablePanelHeight per panel the docks become tabs (WindowFit.h); this minimum
+// only keeps a plot from vanishing while a window is made smaller.
+constexpr int kPanelMinimumHeight = 80;
+constexpr int kCanvasTitleRoom = 20;     // a legend or caption row above the panels
+constexpr QSize kFirstWindow(1280, 800); // on a larger screen; a smaller one gets its available area
+
+// A plot's minimum size: its width, and a readable height for each of its panels.
+void keepReadable(QWidget* plot) {
+    plot->setMinimumWidth(kPlotMinimumWidth);
+    for (QCustomPlot* canvas : plot->findChildren<QCustomPlot*>())
+        canvas->setMinimumHeight(kPanelMinimumHeight * std::max(1, canvas->axisRectCount()) +
+                                 kCanvasTitleRoom);
+}
 } // namespace
 
 MainWindow::MainWindow(QWidget* parent)
@@ -117,18 +132,18 @@ void MainWindow::createDocks() {
     parameters_->setMinimumWidth(280);
     addDock(parameters_, tr("Parameters"), "parametersDock", Qt::LeftDockWidgetArea);
     histogram_ = new DistributionPlot(controller_, "speedHistogram", "speed", this);
-    histogram_->setMinimumSize(kPlotMinimum);
+    keepReadable(histogram_);
     QDockWidget* speed = addDock(histogram_, tr("Speed distribution"), "speedHistogramDock",
                                  Qt::RightDockWidgetArea, distributionKinds("speedHistogram"));
     auto* vx = new DistributionPlot(controller_, "vxHistogram", "vx", this);
-    vx->setMinimumSize(kPlotMinimum);
+    keepReadable(vx);
     tabifyDockWidget(speed, addDock(vx, tr("v_x distribution"), "vxHistogramDock", Qt::RightDockWidgetArea,
                                     distributionKinds("vxHistogram")));
     speed->raise();
     QDockWidget* previous = nullptr;
     for (const SeriesPlotSpec& spec : seriesPlotSpecs()) {
         auto* plot = new SeriesPlot(controller_, spec, this);
-        plot->setMinimumSize(kPlotMinimum);
+        keepReadable(plot);
         seriesPlots_.push_back(plot);
         QDockWidget* dock =
             addDock(plot, spec.title, spec.objectName + "Dock", Qt::RightDockWidgetArea, spec.kinds);
@@ -139,7 +154,7 @@ void MainWindow::createDocks() {
         findChild<QDockWidget*>(seriesPlots_.front()->spec().objectName + "Dock")->raise();
     // A field along the line drawn with the Profile line tool: for every scene with sampled fields.
     profilePlot_ = new ProfilePlot(controller_, viewportCore_, this);
-    profilePlot_->setMinimumSize(kPlotMinimum);
+    keepReadable(profilePlot_);
     QDockWidget* profile = addDock(profilePlot_, tr("Profile"), "profileDock", Qt::RightDockWidgetArea);
     profile->setProperty("needsFields", true);
     if (previous) tabifyDockWidget(previous, profile);
@@ -189,6 +204,7 @@ void MainWindow::modelChanged() {
     parameters_->setEnabled(ours);
     viewportCore_->zoomToFit();
     updateStatus();
+    if (room_) room_->refit(); // the Show chooser and the scene's docks come and go
 }
 
 void MainWindow::documentChanged() {
@@ -229,6 +245,7 @@ void MainWindow::setProjectorMode(bool on) {
     if (on) font.setPointSizeF(baseFont_.pointSizeF() * kProjectorFontScale);
     room_->keepWidthAcross([&font] { QApplication::setFont(font); }); // larger text, not a smaller view
     projectorAction_->setChecked(on);
+    room_->refit(); // once the bars and docks have their new size
 }
 
 void MainWindow::updateStatus() {
@@ -260,7 +277,10 @@ void MainWindow::updateStatus() {
 
 void MainWindow::readSettings() {
     QSettings settings;
-    restoreGeometry(settings.value("window/geometry").toByteArray());
+    // The size the window had last time, small or large; a first window fits the screen it opens on.
+    const QByteArray geometry = settings.value("window/geometry").toByteArray();
+    if (geometry.isEmpty() || !restoreGeometry(geometry)) resize(firstWindowSize(this, kFirstWindow));
+    keepInsideScreen(this);
     restoreState(settings.value("window/state").toByteArray());
     setProjectorMode(settings.value("window/projector", false).toBool());
     try {

@@ -276,13 +276,17 @@ void MainWindow::createToolPalette() {
     gravity_ = menuAction(menu, tr("Gravity"), Qt::Key_G, tr("Switch gravity on or off"));
     gravity_->setObjectName("gravityAction");
     gravity_->setCheckable(true);
-    bar->addAction(gravity_);
     connect(gravity_, &QAction::triggered, this, [this](bool on) {
         const QString problem = controller_->setParameters({{"gravity_on", on}});
         if (!problem.isEmpty()) statusBar()->showMessage(problem, 6000);
     });
     connect(controller_, &SimulationController::parametersChanged, this, &MainWindow::syncGravity);
     connect(controller_, &SimulationController::modelReplaced, this, &MainWindow::syncGravity);
+    // Gravity, Heat and Show have a bar of their own: on a narrow window it moves to the next row
+    // (WindowFit.h) instead of hiding behind the tool bar's overflow button.
+    bar = addToolBar(tr("Gravity, heat and view"));
+    bar->setObjectName("heatViewToolBar");
+    bar->addAction(gravity_);
     bar->addSeparator();
     bar->addWidget(new QLabel(tr(" Cool "), bar));
     heat_ = new QSlider(Qt::Horizontal, bar);
@@ -297,7 +301,6 @@ void MainWindow::createToolPalette() {
     connect(heat_, &QSlider::sliderReleased, heat_, [this] { heat_->setValue(0); });
     bar->addWidget(heat_);
     bar->addWidget(new QLabel(tr(" Heat "), bar));
-    bar->addSeparator();
     viewChooser_->addTo(bar);
     menu->addSeparator();
     const auto scaleEnergy = [this](double factor) {

@@ -3,6 +3,8 @@
 // proportion to how far each is above its minimum width.
 #include "ViewportRoom.h"
 
+#include "WindowFit.h"
+
 #include <QCoreApplication>
 #include <QDockWidget>
 #include <QEvent>
@@ -82,17 +84,27 @@ void ViewportRoom::widenCentral(int width) {
     }
 }
 
+void ViewportRoom::refit() {
+    if (pending_) return;
+    pending_ = true;
+    QTimer::singleShot(0, this, &ViewportRoom::keepShare);
+}
+
 void ViewportRoom::keepShare() {
     pending_ = false;
-    if (window_->isVisible()) widenCentral(static_cast<int>(kMinCentralShare * window_->width()));
+    if (!window_->isVisible()) return;
+    wrapToolBars(window_);
+    settle();
+    // Too short for the plots stacked at a readable height: they become tabs.
+    if (tabifyWhenShort(window_, Qt::RightDockWidgetArea, kReadablePanelHeight) |
+        tabifyWhenShort(window_, Qt::LeftDockWidgetArea, kReadablePanelHeight))
+        settle();
+    widenCentral(static_cast<int>(kMinCentralShare * window_->width()));
 }
 
 bool ViewportRoom::eventFilter(QObject* watched, QEvent* event) {
-    if (watched == window_ && (event->type() == QEvent::Show || event->type() == QEvent::Resize) &&
-        !pending_) {
-        pending_ = true; // once per burst of resizes, after the layout has taken the new size
-        QTimer::singleShot(0, this, &ViewportRoom::keepShare);
-    }
+    if (watched == window_ && (event->type() == QEvent::Show || event->type() == QEvent::Resize))
+        refit(); // once per burst of resizes, after the layout has taken the new size
     return QObject::eventFilter(watched, event);
 }
 

@@ -193,8 +193,7 @@ int main(int argc, char** argv) {
     }
     if (!window.document()->open(args.isEmpty() ? QStringLiteral("gas-write-up") : args.first(), true))
         return 2;
-    window.resize(1280, 800);
-    window.show();
+    window.show(); // at the size it had last time, or one that fits the screen (MainWindow::readSettings)
     if (!parser.isSet(options.screenshot) && !parser.isSet(options.measureFps))
         window.autosave()->offerRestore();
     if (parser.isSet(options.present)) window.presentMode()->setActive(true);

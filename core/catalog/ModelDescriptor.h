@@ -53,6 +53,41 @@ struct UnitSystem {
     std::string time;    // the unit of time, as the status bar writes it: "T", "s"
 };
 
+// One number on present mode's board: a series column as the class reads it.
+struct PresentReadout {
+    std::string column; // one of the kind's series columns
+    std::string label;  // "kT", "Tₓ"
+    std::string unit{}; // after the number; empty: none
+    double scale = 1.0; // shown value = column × scale (a fraction as per cent, seconds as µs)
+    char format = 'g';  // 'f': fixed decimals, 'g': significant digits
+    int precision = 3;  // decimals ('f') or significant digits ('g')
+};
+
+// The large controls a lesson can have in present mode (ui/present/LessonControls.cpp draws them).
+enum class LessonControl {
+    Heat,          // held to a side it heats or cools (needs the scene's tools)
+    ParticleCount, // restarts with N particles at the temperature reached (count_a, count_b, init_kT)
+    Piston,        // the piston switch and compress / stop / expand (piston_enabled)
+    Gravity,       // a slider for `gravity` from 0 to PresentSpec::gravityMaximum
+    GravitySwitch, // the `gravity_on` switch
+    Pour,          // held, it adds small blocks of particles at the top (spawning)
+    SpawnTool,     // chooses the viewport's spawn tool
+    Pace,          // steps per frame, or the automatic pace
+    FieldView,     // what the viewport shows: one button per `view` choice (sampled fields)
+};
+
+// What present mode shows for the kind. A part left empty is built from what the kind offers
+// (ui/present/PresentBoard.h): readouts from its first series columns, its first distribution dock or
+// plot, and controls from its tools and parameters.
+struct PresentSpec {
+    std::vector<PresentReadout> readouts;
+    std::string plot; // shown first: a PlotSpec::name or a distribution dock ("speedHistogram")
+    std::vector<LessonControl> controls;
+    // The gravity slider's top for the scene's parameters (at least twice the gravity it has); nullptr:
+    // twice the scene's or the default gravity.
+    double (*gravityMaximum)(const ParamValues& values) = nullptr;
+};
+
 struct ModelDescriptor {
     std::string kind;  // "gas": presets' "model", resources/presets/<kind>/, the CLI's scene names
     std::string title; // "Gas (molecular dynamics)"
@@ -72,6 +107,7 @@ struct ModelDescriptor {
     // the motion stays watchable on a fast machine (a slow one runs slower). The app's automatic pace
     // steps up to it, and Heat / Cool are a rate per simulated time derived from it (docs/gas.md).
     double watchableRate = 0.0;
+    PresentSpec present;
 };
 
 // Colours the plot specs share, so the scenes' docks read alike.

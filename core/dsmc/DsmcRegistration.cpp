@@ -40,6 +40,12 @@ const ModelDescriptor& dsmcRegistration() {
         .distributions = {"speedHistogram", "vxHistogram"},
         // The cell's relaxation (a few hundred steps of 10–20 µs) unfolds over a few seconds.
         .watchableRate = 0.005,
+        .present = {.readouts = {{"Tx", "Tₓ", "K", 1.0, 'f', 0},
+                                 {"T_perp", "T⊥", "K", 1.0, 'f', 0},
+                                 {"collisions_per_particle", "collisions per particle", "", 1.0, 'f', 2},
+                                 {"step", "step", "", 1.0, 'f', 0}},
+                    .plot = "temperaturesPlot",
+                    .controls = {LessonControl::Pace}},
     };
     return descriptor;
 }

@@ -54,6 +54,15 @@ const ModelDescriptor& fluidRegistration() {
         // A tank tens of L high under g = 9.8 L/s² empties in seconds of model time: ten a second keeps a
         // dam break to a few seconds on the screen.
         .watchableRate = 10.0,
+        .present = {.readouts = {{"particles", "N", "", 1.0, 'f', 0},
+                                 {"density_error_mean", "density error", "%", 100.0, 'f', 2},
+                                 {"density_error_max", "worst density error", "%", 100.0, 'f', 1},
+                                 {"time", "t", "s", 1.0, 'f', 2}},
+                    .plot = "densityErrorPlot",
+                    .controls = {LessonControl::GravitySwitch, LessonControl::Pour, LessonControl::Gravity,
+                                 LessonControl::SpawnTool},
+                    // Twice the write-up's g.
+                    .gravityMaximum = [](const ParamValues&) { return 2 * 9.8; }},
     };
     return descriptor;
 }

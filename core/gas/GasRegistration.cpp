@@ -37,6 +37,23 @@ const ModelDescriptor& gasRegistration() {
         // At kT ≈ 0.5 a disk moves about 1 L per T: 2.5 T a second crosses the 2 L box in about a second,
         // and a dragged disc (tool speed 0.3 L/T) crosses it in under 3 s.
         .watchableRate = 2.5,
+        .present = {.readouts = {{"particles", "N", "", 1.0, 'f', 0},
+                                 {"kT", "kT"},
+                                 {"pressure_wall", "P"},
+                                 {"time", "t", "", 1.0, 'f', 2}},
+                    .plot = "speedHistogram",
+                    .controls = {LessonControl::Heat, LessonControl::ParticleCount, LessonControl::Gravity,
+                                 LessonControl::Piston},
+                    // The strongest gravity makes the scale height kT / (m g) a fifth of the box.
+                    .gravityMaximum =
+                        [](const ParamValues& values) {
+                            const GasParams p = withValues(GasParams{}, GasParams::fields(), values);
+                            const double kT =
+                                p.initVelocity == GasInitVelocity::FixedSpeed
+                                    ? 0.5 * p.a.mass * p.initSpeed * p.initSpeed // 2D: ½ m v² = kT
+                                    : p.initKT;
+                            return 5.0 * kT / (p.a.mass * p.boxHeight);
+                        }},
     };
     return descriptor;
 }

@@ -34,6 +34,13 @@ const ModelDescriptor& tunnelRegistration() {
         .distributions = {"speedHistogram"},
         // A molecule of a 2600 m/s stream crosses a 0.2 m tunnel in 0.8 s of wall time.
         .watchableRate = 1e-4,
+        // Its time runs in microseconds at the watchable rate.
+        .present = {.readouts = {{"particles", "molecules", "", 1.0, 'f', 0},
+                                 {"collisions", "collisions per step", "", 1.0, 'f', 0},
+                                 {"drag", "drag", "N/m", 1.0, 'g', 3},
+                                 {"time", "t", "µs", 1e6, 'f', 1}},
+                    .plot = "speedHistogram",
+                    .controls = {LessonControl::Pace, LessonControl::FieldView}},
     };
     return descriptor;
 }

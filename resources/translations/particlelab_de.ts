@@ -77,58 +77,6 @@ Wirkt nach „Zurücksetzen“.</translation>
         <source>Export data as CSV…</source>
         <translation>Daten als CSV exportieren…</translation>
     </message>
-    <message>
-        <source>N</source>
-        <translation>N</translation>
-    </message>
-    <message>
-        <source>kT</source>
-        <translation>kT</translation>
-    </message>
-    <message>
-        <source>P</source>
-        <translation>P</translation>
-    </message>
-    <message>
-        <source>t</source>
-        <translation>t</translation>
-    </message>
-    <message>
-        <source>K</source>
-        <translation>K</translation>
-    </message>
-    <message>
-        <source>collisions per particle</source>
-        <translation>Stöße pro Teilchen</translation>
-    </message>
-    <message>
-        <source>step</source>
-        <translation>Schritt</translation>
-    </message>
-    <message>
-        <source>density error</source>
-        <translation>Dichtefehler</translation>
-    </message>
-    <message>
-        <source>%</source>
-        <translation>%</translation>
-    </message>
-    <message>
-        <source>worst density error</source>
-        <translation>größter Dichtefehler</translation>
-    </message>
-    <message>
-        <source>s</source>
-        <translation>s</translation>
-    </message>
-    <message>
-        <source>Tₓ</source>
-        <translation>Tₓ</translation>
-    </message>
-    <message>
-        <source>T⊥</source>
-        <translation>T⊥</translation>
-    </message>
 </context>
 <context>
     <name>pl::core</name>
@@ -1516,6 +1464,54 @@ Wirkt nach „Zurücksetzen“.</translation>
         <source>reduced (L, T, M)</source>
         <translation>reduziert (L, T, M)</translation>
     </message>
+    <message>
+        <source>%</source>
+        <translation>%</translation>
+    </message>
+    <message>
+        <source>N</source>
+        <translation>N</translation>
+    </message>
+    <message>
+        <source>N/m</source>
+        <translation>N/m</translation>
+    </message>
+    <message>
+        <source>P</source>
+        <translation>P</translation>
+    </message>
+    <message>
+        <source>Tₓ</source>
+        <translation>Tₓ</translation>
+    </message>
+    <message>
+        <source>T⊥</source>
+        <translation>T⊥</translation>
+    </message>
+    <message>
+        <source>collisions per particle</source>
+        <translation>Stöße pro Teilchen</translation>
+    </message>
+    <message>
+        <source>density error</source>
+        <translation>Dichtefehler</translation>
+    </message>
+    <message>
+        <source>step</source>
+        <translation>Schritt</translation>
+    </message>
+    <message>
+        <source>t</source>
+        <translation>t</translation>
+    </message>
+    <message>
+        <source>worst density error</source>
+        <translation>größter Dichtefehler</translation>
+    </message>
+    <message>
+        <source>µs</source>
+        <translation>µs</translation>
+    </message>
 </context>
 <context>
     <name>pl::ui::AppRecorder</name>
@@ -2031,10 +2027,6 @@ Wirkt nach „Zurücksetzen“.</translation>
         <translation>Zurücksetzen</translation>
     </message>
     <message>
-        <source>Volume</source>
-        <translation>Volumen</translation>
-    </message>
-    <message>
         <source>Piston</source>
         <translation>Kolben</translation>
     </message>
@@ -2067,10 +2059,6 @@ Wirkt nach „Zurücksetzen“.</translation>
         <translation>Eingießen (halten)</translation>
     </message>
     <message>
-        <source>Drag a rectangle in the tank to fill it with fluid; a click adds a drop.</source>
-        <translation>Ein Rechteck im Becken aufziehen, um es mit Flüssigkeit zu füllen; ein Klick fügt einen Tropfen hinzu.</translation>
-    </message>
-    <message>
         <source>Steps per frame</source>
         <translation>Schritte pro Bild</translation>
     </message>
@@ -2095,16 +2083,20 @@ Wirkt nach „Zurücksetzen“.</translation>
         <translation>Werkzeug „Erzeugen“</translation>
     </message>
     <message>
-        <source>Pour where you like: drag a rectangle in the tank to fill it with fluid</source>
-        <translation>Gießen, wo Sie möchten: ein Rechteck im Becken aufziehen, um es mit Flüssigkeit zu füllen</translation>
-    </message>
-    <message>
         <source>Show</source>
         <translation>Anzeige</translation>
     </message>
     <message>
         <source>auto</source>
         <translation>auto</translation>
+    </message>
+    <message>
+        <source>Add particles where you like: drag a rectangle in the scene to fill it</source>
+        <translation>Teilchen hinzufügen, wo man möchte: ein Rechteck in der Szene aufziehen, um es zu füllen</translation>
+    </message>
+    <message>
+        <source>Drag a rectangle in the scene to fill it with particles; a click adds one.</source>
+        <translation>Ein Rechteck in der Szene aufziehen, um es mit Teilchen zu füllen; ein Klick fügt eines hinzu.</translation>
     </message>
 </context>
 <context>
@@ -2714,6 +2706,10 @@ Wirkt nach „Zurücksetzen“.</translation>
     <message>
         <source>Switch gravity on or off (%1)</source>
         <translation>Schwerkraft ein- oder ausschalten (%1)</translation>
+    </message>
+    <message>
+        <source>Gravity, heat and view</source>
+        <translation>Schwerkraft, Heizen und Ansicht</translation>
     </message>
 </context>
 <context>

@@ -75,6 +75,11 @@ std::vector<std::string> coreDisplayStrings() {
                 for (const PlotCurve& curve : panel->curves) add(curve.label);
             }
         }
+        // Present mode's readouts.
+        for (const PresentReadout& readout : info.present.readouts) {
+            add(readout.label);
+            add(readout.unit);
+        }
     }
     // The methods lab's legend of how each cell of a sweep ended.
     using methods::CellOutcome;

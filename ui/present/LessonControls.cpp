@@ -1,7 +1,10 @@
-// LessonControls: built anew for each scene from what its parameters offer, so a scene without a piston
-// or gravity simply shows fewer controls. Sizes come from a style sheet: large handles for a projector.
+// LessonControls: built anew for each scene from the list its kind's registration gives (or, where it
+// gives none, from what the model offers: PresentBoard.h). The controls fill a two-column grid, the wide
+// ones a whole row, so the board keeps the panel's width. Sizes come from a style sheet: large handles
+// for a projector.
 #include "LessonControls.h"
 
+#include "PresentBoard.h"
 #include "SimulationController.h"
 #include "ViewChooser.h"
 #include "common/SceneTools.h"
@@ -25,14 +28,15 @@ constexpr int kPourIntervalMs = 150;   // one small block of fluid per interval 
 constexpr double kPourFraction = 0.04; // side of the poured block, as a fraction of the tank width
 constexpr double kCountRange = 2.0;    // the particle slider reaches twice the scene's starting N
 constexpr double kMaxPacking = 0.4;    // … but never past 40 % of the box covered by disks
-constexpr double kGravityScale = 5.0;  // gas: the strongest gravity makes the scale height H / 5
-constexpr double kFluidGravity = 9.8;  // fluid: the write-up's g; the slider reaches twice it
+constexpr int kViewColumns = 2;        // the field buttons wrap after this many
 
-const char* kStyle = "QPushButton { padding: 10px 8px; }"
+// Large enough to hit on a projector's touch screen, small enough that a 700 px high board holds a
+// readable plot beside four rows of controls.
+const char* kStyle = "QPushButton { padding: 7px 8px; }"
                      "QPushButton:checked { background: #2a5aaa; color: white; }"
-                     "QSlider { min-height: 44px; }"
-                     "QSlider::groove:horizontal { height: 12px; background: #c8c8c8; border-radius: 6px; }"
-                     "QSlider::handle:horizontal { width: 40px; margin: -14px 0; border-radius: 20px;"
+                     "QSlider { min-height: 36px; }"
+                     "QSlider::groove:horizontal { height: 10px; background: #c8c8c8; border-radius: 5px; }"
+                     "QSlider::handle:horizontal { width: 34px; margin: -12px 0; border-radius: 17px;"
                      " background: #2a5aaa; }";
 
 double number(const ParamValues& values, const std::string& key, double fallback) {
@@ -81,13 +85,11 @@ void LessonControls::rebuild() {
     pistonSwitch_ = nullptr;
     std::fill(std::begin(pistonButtons_), std::end(pistonButtons_), nullptr);
     viewButtons_.clear();
+    row_ = 0;
+    column_ = 0;
     addRunRow();
-    if (const Model* model = controller_->model()) {
-        if (model->kind() == "gas") addGasControls();
-        if (model->kind() == "fluid") addFluidControls();
-        if (model->kind() == "dsmc") addDsmcControls();
-        if (model->sampledFields()) addFieldControls();
-    }
+    if (Model* model = controller_->model())
+        for (LessonControl control : lessonControls(*model)) addControl(control);
     message_ = new QLabel(body_);
     message_->setWordWrap(true);
     grid_->addWidget(message_, grid_->rowCount(), 0, 1, 2);
@@ -102,11 +104,61 @@ QPushButton* LessonControls::addButton(QLayout* row, const QString& text, const 
     return button;
 }
 
-QVBoxLayout* LessonControls::addGroup(int row, int column, int span) {
+QVBoxLayout* LessonControls::addCell() {
     auto* group = new QVBoxLayout;
     group->setSpacing(2);
-    grid_->addLayout(group, row, column, 1, span);
+    grid_->addLayout(group, row_, column_);
+    if (++column_ == 2) {
+        column_ = 0;
+        ++row_;
+    }
     return group;
+}
+
+QVBoxLayout* LessonControls::addRow() {
+    if (column_ != 0) { // the half row left open stays empty
+        column_ = 0;
+        ++row_;
+    }
+    auto* group = new QVBoxLayout;
+    group->setSpacing(2);
+    grid_->addLayout(group, row_++, 0, 1, 2);
+    return group;
+}
+
+void LessonControls::addControl(LessonControl control) {
+    switch (control) {
+    case LessonControl::Heat:
+        if (controller_->tools()) addHeatSlider(addCell());
+        return;
+    case LessonControl::ParticleCount:
+        addParticleCount(addCell());
+        return;
+    case LessonControl::Piston:
+        if (controller_->tools()) {
+            QVBoxLayout* drive = addRow(); // the three buttons take a row; the switch a cell below
+            addPistonGroup(drive, addCell());
+        }
+        return;
+    case LessonControl::Gravity:
+        addGravitySlider(addCell(), gravityMaximum(*controller_->model()));
+        return;
+    case LessonControl::GravitySwitch:
+        addGravitySwitch(addCell());
+        return;
+    case LessonControl::Pour:
+        if (controller_->tools()) addPourButton(addCell());
+        return;
+    case LessonControl::SpawnTool:
+        if (controller_->tools()) addSpawnToolButton(addCell());
+        return;
+    case LessonControl::Pace:
+        addPaceSlider(addCell());
+        return;
+    case LessonControl::FieldView:
+        addFieldButtons();
+        return;
+    }
 }
 
 QSlider* LessonControls::addSlider(QVBoxLayout* group, const QString& title, QLabel** valueLabel) {
@@ -125,24 +177,29 @@ QSlider* LessonControls::addSlider(QVBoxLayout* group, const QString& title, QLa
 }
 
 void LessonControls::addRunRow() {
+    // Half a row: the first control of the scene takes the other half.
+    QVBoxLayout* group = addCell();
+    group->addStretch(1);
     auto* row = new QHBoxLayout;
-    addGroup(0, 0, 2)->addLayout(row);
+    group->addLayout(row);
     run_ = addButton(row, tr("Run"), "lessonRun");
     connect(run_, &QPushButton::clicked, controller_, &SimulationController::togglePlay);
     connect(addButton(row, tr("Reset"), "lessonReset"), &QPushButton::clicked, controller_,
             &SimulationController::reset);
 }
 
-void LessonControls::addGasControls() {
+void LessonControls::addHeatSlider(QVBoxLayout* group) {
     // Temperature: held to a side it heats or cools at a rate per simulated time proportional to the
     // slider, and springs back, as the tool bar's Heat slider; the readout shows where kT has got to.
-    QSlider* heat = addSlider(addGroup(1, 0), tr("◀ Cool   Heat ▶"), nullptr);
+    QSlider* heat = addSlider(group, tr("◀ Cool   Heat ▶"), nullptr);
     heat->setObjectName("lessonHeat");
     heat->setRange(-kSliderSteps, kSliderSteps);
     connect(heat, &QSlider::valueChanged, controller_,
             [this](int v) { controller_->setHeatRate(static_cast<double>(v) / kSliderSteps); });
     connect(heat, &QSlider::sliderReleased, heat, [heat] { heat->setValue(0); });
+}
 
+void LessonControls::addParticleCount(QVBoxLayout* group) {
     // Particle number: the experiment restarts with N disks at the temperature it has now, so the class
     // compares pressures at equal kT. Spawning could only add disks, and is refused where they overlap.
     const ParamValues values = controller_->model()->params();
@@ -154,7 +211,7 @@ void LessonControls::addGasControls() {
     const double packed = meanDiscArea > 0 ? kMaxPacking * area / meanDiscArea : kCountRange * total;
     const double cap = number(values, "max_particles", kCountRange * total);
     const int top = static_cast<int>(std::max(total, std::min({kCountRange * total, packed, cap})));
-    count_ = addSlider(addGroup(1, 1), tr("Particles (restart at this kT)"), &countLabel_);
+    count_ = addSlider(group, tr("Particles (restart at this kT)"), &countLabel_);
     count_->setObjectName("lessonCount");
     count_->setRange(std::max(1, top / 50), top);
     count_->setValue(static_cast<int>(total));
@@ -166,18 +223,10 @@ void LessonControls::addGasControls() {
         if (action != QAbstractSlider::SliderMove) // a click on the groove: applies at once
             QTimer::singleShot(0, this, [this] { applyParticleCount(count_->value()); });
     });
-
-    addPistonGroup(addGroup(2, 0, 2), addGroup(3, 1));
-    const double kT = latest(controller_, "kT", 0.5);
-    const double mass = number(values, "mass_a", 1.0);
-    const double height = number(values, "box_height", 1.0);
-    addGravitySlider(addGroup(3, 0),
-                     std::max(kGravityScale * kT / (mass * height), 2 * number(values, "gravity", 0)));
 }
 
 void LessonControls::addPistonGroup(QVBoxLayout* drive, QVBoxLayout* toggle) {
-    auto* name = new QLabel(tr("Volume"), body_);
-    toggle->addWidget(name);
+    toggle->addStretch(1);
     auto* toggleRow = new QHBoxLayout;
     toggle->addLayout(toggleRow);
     pistonSwitch_ = addButton(toggleRow, tr("Piston"), "lessonPistonSwitch");
@@ -217,43 +266,52 @@ void LessonControls::addGravitySlider(QVBoxLayout* group, double maximum) {
     });
 }
 
-void LessonControls::addFluidControls() {
+void LessonControls::addGravitySwitch(QVBoxLayout* group) {
     auto* switches = new QHBoxLayout;
-    addGroup(1, 0)->addLayout(switches);
+    group->addStretch(1);
+    group->addLayout(switches);
     QPushButton* gravity = addButton(switches, tr("Gravity on"), "lessonGravitySwitch");
     gravity->setCheckable(true);
-    gravity->setChecked(std::get<bool>(controller_->model()->params().at("gravity_on")));
+    const ParamValues values = controller_->model()->params();
+    const auto on = values.find("gravity_on");
+    gravity->setChecked(on != values.end() && std::holds_alternative<bool>(on->second) &&
+                        std::get<bool>(on->second));
     connect(gravity, &QPushButton::toggled, this, [this](bool on) {
         const QString problem = controller_->setParameters({{"gravity_on", on}});
         if (!problem.isEmpty()) say(problem);
     });
-    // Pour: held, it drops small blocks of fluid into the middle of the tank, as a tap would.
+}
+
+void LessonControls::addPourButton(QVBoxLayout* group) {
+    // Pour: held, it drops small blocks of particles into the middle of the scene's top, as a tap would.
     auto* pouring = new QHBoxLayout;
-    addGroup(1, 1)->addLayout(pouring);
+    group->addStretch(1);
+    group->addLayout(pouring);
     QPushButton* pour = addButton(pouring, tr("Pour (hold)"), "lessonPour");
     connect(pour, &QPushButton::pressed, this, [this] {
         pourOnce();
         pour_->start();
     });
     connect(pour, &QPushButton::released, pour_, &QTimer::stop);
-    addGravitySlider(addGroup(2, 0), 2 * kFluidGravity);
+}
+
+void LessonControls::addSpawnToolButton(QVBoxLayout* group) {
     auto* mouseRow = new QHBoxLayout;
-    QVBoxLayout* mouseGroup = addGroup(2, 1);
-    mouseGroup->addStretch(1);
-    mouseGroup->addLayout(mouseRow);
+    group->addStretch(1);
+    group->addLayout(mouseRow);
     QPushButton* mouse = addButton(mouseRow, tr("Spawn tool"), "lessonSpawnTool");
-    mouse->setToolTip(tr("Pour where you like: drag a rectangle in the tank to fill it with fluid"));
+    mouse->setToolTip(tr("Add particles where you like: drag a rectangle in the scene to fill it"));
     connect(mouse, &QPushButton::clicked, this, [this] {
         emit toolRequested(ViewportTool::Spawn);
-        say(tr("Drag a rectangle in the tank to fill it with fluid; a click adds a drop."));
+        say(tr("Drag a rectangle in the scene to fill it with particles; a click adds one."));
     });
 }
 
-void LessonControls::addDsmcControls() {
+void LessonControls::addPaceSlider(QVBoxLayout* group) {
     QLabel* value = nullptr;
     // 1 … 10 steps per frame, and at the right end the automatic pace (the scene's default).
     constexpr int kFixedSteps = 10, kAutomatic = kFixedSteps + 1;
-    QSlider* speed = addSlider(addGroup(1, 0), tr("Steps per frame"), &value);
+    QSlider* speed = addSlider(group, tr("Steps per frame"), &value);
     speed->setObjectName("lessonSpeed");
     speed->setRange(1, kAutomatic);
     const auto show = [value](int n) { value->setText(n == kAutomatic ? tr("auto") : QString::number(n)); };
@@ -270,16 +328,19 @@ void LessonControls::addDsmcControls() {
     });
 }
 
-void LessonControls::addFieldControls() {
-    addDsmcControls(); // the speed, as in the DSMC cell: collisions make these scenes slow
+void LessonControls::addFieldButtons() {
     const ParamSpec* view = findSpec(controller_->model()->paramSpecs(), ViewChooser::kKey);
-    if (!view || view->kind != ParamKind::Choice) return;
-    QVBoxLayout* group = addGroup(2, 0, 2);
+    if (!view || view->kind != ParamKind::Choice || !controller_->model()->sampledFields()) return;
+    QVBoxLayout* group = addRow();
     group->addWidget(new QLabel(tr("Show"), body_));
-    auto* row = new QHBoxLayout;
-    group->addLayout(row);
+    auto* buttons = new QGridLayout; // rows of a few buttons: the panel keeps its width
+    buttons->setSpacing(4);
+    group->addLayout(buttons);
     for (const std::string& choice : view->choices) {
         const QString key = QString::fromStdString(choice);
+        auto* row = new QHBoxLayout;
+        const int index = static_cast<int>(viewButtons_.size());
+        buttons->addLayout(row, index / kViewColumns, index % kViewColumns);
         QPushButton* button = addButton(row, viewChoiceText(key), "lessonView-" + key);
         button->setCheckable(true);
         viewButtons_.push_back(button);

@@ -1,9 +1,11 @@
-// The few large controls a lesson needs in present mode, per scene. Gas: temperature (hold to heat or
-// cool), number of particles, the piston (compress / stop / expand) and gravity; fluid: gravity and
-// pouring; DSMC: run, reset and speed; a scene with sampled fields (the wind tunnel): speed and what the
-// viewport shows, the particles or a field. Every change goes through the SimulationController.
+// The few large controls a lesson needs in present mode, as the scene's kind lists them in its
+// registration (ModelDescriptor::present; PresentBoard.h builds a list from the model's capabilities where
+// it gives none): temperature (hold to heat or cool), number of particles, the piston (compress / stop /
+// expand), gravity, pouring and the spawn tool, the pace, and what the viewport shows (particles or a
+// field). Run and Reset are always there. Every change goes through the SimulationController.
 #pragma once
 
+#include "catalog/ModelDescriptor.h"
 #include "viewport/ViewportCore.h"
 
 #include <QWidget>
@@ -31,16 +33,21 @@ signals:
 
 private:
     void rebuild(); // a new scene: its controls
-    // A cell of the two-column grid (span 2: a whole row) holding one control group.
-    QVBoxLayout* addGroup(int row, int column, int span = 1);
+    // The grid's next free cell (two columns), or a whole row of its own.
+    QVBoxLayout* addCell();
+    QVBoxLayout* addRow();
+    void addControl(LessonControl control);
     void addRunRow();
-    void addGasControls();
-    void addFluidControls();
-    void addDsmcControls();
-    void addFieldControls();
+    void addHeatSlider(QVBoxLayout* group);
+    void addParticleCount(QVBoxLayout* group);
     void addPistonGroup(QVBoxLayout* drive, QVBoxLayout* toggle);
-    // The downward acceleration "gravity", the same key in every scene, from 0 to maximum [L/T²].
+    // The downward acceleration "gravity", the same key in every scene, from 0 to maximum.
     void addGravitySlider(QVBoxLayout* group, double maximum);
+    void addGravitySwitch(QVBoxLayout* group);
+    void addPourButton(QVBoxLayout* group);
+    void addSpawnToolButton(QVBoxLayout* group);
+    void addPaceSlider(QVBoxLayout* group);
+    void addFieldButtons(); // a row: one button per choice of the `view` parameter
     QSlider* addSlider(QVBoxLayout* group, const QString& title, QLabel** valueLabel);
     QPushButton* addButton(QLayout* row, const QString& text, const QString& objectName);
     void applyParticleCount(int total);
@@ -52,6 +59,7 @@ private:
     QVBoxLayout* layout_;
     QWidget* body_ = nullptr; // rebuilt per scene
     QGridLayout* grid_ = nullptr;
+    int row_ = 0, column_ = 0; // the grid's next free cell
     QPushButton* run_ = nullptr;
     QPushButton* pistonButtons_[3] = {nullptr, nullptr, nullptr}; // compress, stop, expand
     QPushButton* pistonSwitch_ = nullptr;

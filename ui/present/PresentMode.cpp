@@ -13,6 +13,7 @@
 #include <QScrollArea>
 #include <QShortcut>
 #include <QStatusBar>
+#include <QStyle>
 #include <QTimer>
 #include <QToolBar>
 #include <algorithm>
@@ -51,7 +52,8 @@ void PresentMode::enter() {
     QStatusBar* status = window_->findChild<QStatusBar*>(QString(), Qt::FindDirectChildrenOnly);
     saved_ = {window_->saveState(), window_->saveGeometry(), window_->windowState(),
               window_->menuWidget() && !window_->menuWidget()->isHidden(), status && !status->isHidden()};
-    panel_ = new PresentPanel(controller_);
+    panel_ = new PresentPanel(controller_, window_->findChild<QAction*>("recordAction"));
+    panel_->installEventFilter(this); // its minimum width grows with longer numbers or another scene
     connect(panel_, &PresentPanel::leaveRequested, this, [this] { setActive(false); });
     connect(panel_, &PresentPanel::toolRequested, this, &PresentMode::toolRequested);
     // A short window (1024 × 700) scrolls the panel rather than squeezing the viewport.
@@ -95,12 +97,19 @@ void PresentMode::hideEverythingElse() {
 
 void PresentMode::fitPanel() {
     if (!dock_) return;
-    const int width = std::min(kPanelMaxWidth, static_cast<int>(kPanelShare * window_->width()));
-    window_->resizeDocks({dock_}, {width}, Qt::Horizontal);
+    // The share, widened (up to kPanelMostShare) where the board needs more to show its controls whole;
+    // the readouts' numbers and a new scene's controls may need more later (the panel's LayoutRequest).
+    const int needed = panel_->minimumSizeHint().width() +
+                       panel_->style()->pixelMetric(QStyle::PM_ScrollBarExtent) + kPanelSlack;
+    const int width =
+        std::min(std::max(std::min(kPanelMaxWidth, static_cast<int>(kPanelShare * window_->width())), needed),
+                 static_cast<int>(kPanelMostShare * window_->width()));
+    if (width != dock_->width()) window_->resizeDocks({dock_}, {width}, Qt::Horizontal);
 }
 
 bool PresentMode::eventFilter(QObject* watched, QEvent* event) {
-    if (watched == window_ && event->type() == QEvent::Resize && dock_)
+    if (dock_ && ((watched == window_ && event->type() == QEvent::Resize) ||
+                  (watched == panel_ && event->type() == QEvent::LayoutRequest)))
         QTimer::singleShot(0, this, &PresentMode::fitPanel);
     return QObject::eventFilter(watched, event);
 }

@@ -32,6 +32,8 @@ public:
     // (two thirds of the window or more, so well over half its area).
     static constexpr double kPanelShare = 0.34;
     static constexpr int kPanelMaxWidth = 560;
+    static constexpr double kPanelMostShare = 0.45; // a board that needs more scrolls instead
+    static constexpr int kPanelSlack = 4;           // the dock's and the scroll area's edges
 
 signals:
     void activeChanged(bool on);

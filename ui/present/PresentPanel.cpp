@@ -3,54 +3,67 @@
 #include "PresentPanel.h"
 
 #include "LessonControls.h"
+#include "PresentBoard.h"
 #include "PresentReadouts.h"
 #include "SimulationController.h"
 #include "plots/DistributionPlot.h"
 #include "plots/SeriesPlotSpecs.h"
 
+#include <QAction>
 #include <QComboBox>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QPushButton>
 #include <QSettings>
+#include <QToolButton>
 #include <QVBoxLayout>
+#include <qcustomplot.h>
 
 namespace pl::ui {
 
 namespace {
 constexpr double kPanelFontScale = 1.35;
-constexpr int kPlotMinimumHeight = 220; // below this a short window scrolls the panel instead
-
-// Each scene's first choice: the plot a first lesson on it is about.
-QString defaultPlot(const QString& kind) {
-    if (kind == QLatin1String("gas")) return QStringLiteral("speedHistogram");
-    if (kind == QLatin1String("dsmc")) return QStringLiteral("temperaturesPlot");
-    return QStringLiteral("densityErrorPlot");
-}
+constexpr int kPlotMinimumHeight = 170; // readable; a taller window gives the plot the rest
+constexpr int kChooserCharacters = 12;  // the chooser may be narrower than its longest title
+const char* kRecordStyle = "QToolButton { padding: 6px 8px; }"
+                           "QToolButton:checked { background: #c0392b; color: white; font-weight: bold; }";
 } // namespace
 
-PresentPanel::PresentPanel(SimulationController* controller, QWidget* parent)
+PresentPanel::PresentPanel(SimulationController* controller, QAction* record, QWidget* parent)
     : QWidget(parent), controller_(controller), plotBox_(new QVBoxLayout) {
     setObjectName("presentPanel");
     QFont big = font();
     big.setPointSizeF(font().pointSizeF() * kPanelFontScale);
     setFont(big); // before the children exist: styled widgets keep the font they were made with
-    readouts_ = new PresentReadouts(controller, this);
-    chooser_ = new QComboBox(this);
-    controls_ = new LessonControls(controller, this);
     auto* layout = new QVBoxLayout(this);
-    layout->addWidget(readouts_);
-    chooser_->setObjectName("presentPlotChooser");
-    chooser_->setFocusPolicy(Qt::NoFocus);
-    chooser_->setToolTip(tr("Which of the scene's plots to show"));
+    // Record and Leave come first, so a short window that scrolls the panel still shows them.
     auto* top = new QHBoxLayout;
-    top->addWidget(chooser_, 1);
+    if (record) {
+        auto* button = new QToolButton(this);
+        button->setObjectName("presentRecord");
+        button->setDefaultAction(record); // its text and checked state say whether a clip is recording
+        button->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
+        button->setFocusPolicy(Qt::NoFocus);
+        button->setStyleSheet(kRecordStyle);
+        top->addWidget(button);
+    }
+    top->addStretch(1);
     auto* leave = new QPushButton(tr("Leave (Esc)"), this);
     leave->setObjectName("presentLeave");
     leave->setFocusPolicy(Qt::NoFocus);
     top->addWidget(leave);
     layout->addLayout(top);
+    readouts_ = new PresentReadouts(controller, this);
+    layout->addWidget(readouts_);
+    chooser_ = new QComboBox(this);
+    chooser_->setObjectName("presentPlotChooser");
+    chooser_->setFocusPolicy(Qt::NoFocus);
+    chooser_->setToolTip(tr("Which of the scene's plots to show"));
+    chooser_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    chooser_->setMinimumContentsLength(kChooserCharacters);
+    layout->addWidget(chooser_);
     layout->addLayout(plotBox_, 1);
+    controls_ = new LessonControls(controller, this);
     layout->addWidget(controls_);
     connect(leave, &QPushButton::clicked, this, &PresentPanel::leaveRequested);
     connect(controls_, &LessonControls::toolRequested, this, &PresentPanel::toolRequested);
@@ -75,7 +88,9 @@ void PresentPanel::fillChooser() {
         chooser_->addItem(tr("v_x distribution"), QStringLiteral("vxHistogram"));
     for (const SeriesPlotSpec& spec : seriesPlotSpecs())
         if (spec.kinds.contains(kind)) chooser_->addItem(spec.title, spec.objectName);
-    const QString wanted = QSettings().value("present/plot/" + kind, defaultPlot(kind)).toString();
+    // The registration's first plot, unless the teacher chose another for this kind before.
+    const QString first = model ? QString::fromStdString(presentPlot(*model)) : QString();
+    const QString wanted = QSettings().value("present/plot/" + kind, first).toString();
     const int item = std::max(0, chooser_->findData(wanted));
     chooser_->setCurrentIndex(item);
     showPlot(item);
@@ -99,7 +114,9 @@ void PresentPanel::showPlot(int item) {
     }
     if (!plot_) return;
     plot_->setObjectName("presentPlot");
-    plot_->setMinimumHeight(kPlotMinimumHeight);
+    // The drawing itself keeps a readable height, whatever controls the plot has above it.
+    for (QCustomPlot* canvas : plot_->findChildren<QCustomPlot*>())
+        canvas->setMinimumHeight(kPlotMinimumHeight);
     plotBox_->addWidget(plot_);
     plot_->show();
 }

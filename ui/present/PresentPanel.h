@@ -1,11 +1,13 @@
-// The side panel of present mode: big readouts, one large plot of the teacher's choice among the scene's
-// plots, and the lesson's controls, all in a font larger than the rest of the window.
+// The side panel of present mode: Record and Leave on top, big readouts, one large plot of the teacher's
+// choice among the scene's plots, and the lesson's controls, all in a font larger than the rest of the
+// window.
 #pragma once
 
 #include "viewport/ViewportCore.h"
 
 #include <QWidget>
 
+class QAction;
 class QComboBox;
 class QPushButton;
 class QVBoxLayout;
@@ -19,7 +21,8 @@ class SimulationController;
 class PresentPanel : public QWidget {
     Q_OBJECT
 public:
-    explicit PresentPanel(SimulationController* controller, QWidget* parent = nullptr);
+    // record: the window's Record clip action (checked while recording), shown as a button; may be null.
+    PresentPanel(SimulationController* controller, QAction* record, QWidget* parent = nullptr);
 
     QComboBox* plotChooser() const { return chooser_; }
     QWidget* currentPlot() const { return plot_; }

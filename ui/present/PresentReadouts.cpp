@@ -2,7 +2,9 @@
 // one that is not (yet) finite shows a dash rather than "nan".
 #include "PresentReadouts.h"
 
+#include "PresentBoard.h"
 #include "SimulationController.h"
+#include "i18n/Translations.h"
 
 #include <QEvent>
 #include <QGridLayout>
@@ -23,23 +25,12 @@ QFont valueFont(const QFont& base) {
 }
 } // namespace
 
-std::vector<ReadoutSpec> readoutSpecsFor(const QString& kind) {
-    if (kind == QLatin1String("gas"))
-        return {{"particles", QObject::tr("N"), {}, 1.0, 'f', 0},
-                {"kT", QObject::tr("kT"), {}, 1.0, 'g', 3},
-                {"pressure_wall", QObject::tr("P"), {}, 1.0, 'g', 3},
-                {"time", QObject::tr("t"), {}, 1.0, 'f', 2}};
-    if (kind == QLatin1String("dsmc"))
-        return {{"Tx", QObject::tr("Tₓ"), QObject::tr("K"), 1.0, 'f', 0},
-                {"T_perp", QObject::tr("T⊥"), QObject::tr("K"), 1.0, 'f', 0},
-                {"collisions_per_particle", QObject::tr("collisions per particle"), {}, 1.0, 'f', 2},
-                {"step", QObject::tr("step"), {}, 1.0, 'f', 0}};
-    if (kind == QLatin1String("fluid"))
-        return {{"particles", QObject::tr("N"), {}, 1.0, 'f', 0},
-                {"density_error_mean", QObject::tr("density error"), QObject::tr("%"), 100.0, 'f', 2},
-                {"density_error_max", QObject::tr("worst density error"), QObject::tr("%"), 100.0, 'f', 1},
-                {"time", QObject::tr("t"), QObject::tr("s"), 1.0, 'f', 2}};
-    return {};
+std::vector<ReadoutSpec> readoutSpecsFor(const Model& model) {
+    std::vector<ReadoutSpec> out;
+    for (const PresentReadout& r : presentReadouts(model))
+        out.push_back({QString::fromStdString(r.column), coreText(r.label),
+                       r.unit.empty() ? QString() : coreText(r.unit), r.scale, r.format, r.precision});
+    return out;
 }
 
 PresentReadouts::PresentReadouts(SimulationController* controller, QWidget* parent)
@@ -62,7 +53,7 @@ void PresentReadouts::rebuild() {
     if (!model) return;
     const QFont big = valueFont(font());
     int index = 0;
-    for (const ReadoutSpec& spec : readoutSpecsFor(QString::fromStdString(model->kind()))) {
+    for (const ReadoutSpec& spec : readoutSpecsFor(*model)) {
         const int column = controller_->series()->column(spec.column);
         if (column < 0) continue;
         auto* name = new QLabel(spec.name, this);

@@ -1,5 +1,5 @@
-// Large readouts for present mode: the few numbers a lesson is about (gas: N, kT, P, t; DSMC: T_x, T_⊥,
-// collisions; fluid: N, density error), read from the controller's series store after every sample.
+// Large readouts for present mode: the few numbers a lesson is about, as the scene's kind lists them in
+// its registration (PresentBoard.h), read from the controller's series store after every sample.
 #pragma once
 
 #include <QString>
@@ -9,6 +9,10 @@
 
 class QGridLayout;
 class QLabel;
+
+namespace pl {
+class Model;
+}
 
 namespace pl::ui {
 
@@ -24,8 +28,8 @@ struct ReadoutSpec {
     int precision = 3;
 };
 
-// The readouts of a scene kind ("gas", "dsmc", "fluid"); empty for an unknown kind.
-std::vector<ReadoutSpec> readoutSpecsFor(const QString& kind);
+// The readouts of the model's kind, in the UI's language.
+std::vector<ReadoutSpec> readoutSpecsFor(const Model& model);
 
 class PresentReadouts : public QWidget {
     Q_OBJECT

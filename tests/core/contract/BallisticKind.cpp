@@ -166,6 +166,7 @@ SceneView BallisticModel::sceneView() const {
     for (std::size_t i = 0; i < state_.size(); ++i) {
         view.x.push_back(static_cast<float>(state_.x[i]));
         view.y.push_back(static_cast<float>(state_.y[i]));
+        view.radius.push_back(0.0f); // a point of a few pixels
         view.value.push_back(static_cast<float>(std::hypot(state_.vx[i], state_.vy[i])));
     }
     view.colourLabel = "speed";
@@ -210,6 +211,7 @@ const ModelDescriptor& ballisticRegistration() {
                    {}}},
         .distributions = {},
         .watchableRate = 1.0,
+        .present = {}, // nothing of its own: present mode builds the board from what the kind offers
     };
     return descriptor;
 }

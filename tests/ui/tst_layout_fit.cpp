@@ -1,0 +1,214 @@
+// Layouts that fit a small screen, run on a 1024×700 X screen (CMake starts it): the first window lies
+// inside the screen's available area, every shown plot keeps a readable height per panel in normal and
+// projector mode (the docks become tabs rather than strips), no tool-bar item falls into the overflow menu,
+// and the window's size comes back on the next start, small or large. The start itself is the real program
+// (particlelab --screenshot), so what is checked is what a user's first window gets.
+#include "ExperimentDocument.h"
+#include "MainWindow.h"
+#include "catalog/ModelCatalog.h"
+#include "i18n/Translations.h"
+
+#include <QDockWidget>
+#include <QProcess>
+#include <QScreen>
+#include <QTemporaryDir>
+#include <QToolBar>
+#include <QToolButton>
+#include <QtTest>
+#include <qcustomplot.h>
+
+using namespace pl;
+
+namespace {
+
+constexpr QSize kScreen(1024, 700);
+constexpr int kReadablePlotHeight = 150;
+
+// The window the program opens with the settings in XDG_CONFIG_HOME, as its screenshot shows it.
+QSize programWindowSize(const QString& scratch) {
+    const QString image = scratch + "/first.png";
+    QProcess app;
+    app.start(PARTICLELAB_GUI, {"gas-classroom", "--frames", "2", "--screenshot", image});
+    if (!app.waitForFinished(60000) || app.exitCode() != 0) {
+        qWarning("particlelab: %s", app.readAllStandardError().constData());
+        return {};
+    }
+    return QImage(image).size();
+}
+
+// The first built-in preset of every registered kind.
+QStringList onePresetPerKind() {
+    QStringList names;
+    for (const ModelDescriptor& kind : modelCatalog())
+        if (!builtinPresetsOf(kind.kind).empty())
+            names << QString::fromStdString(builtinPresetsOf(kind.kind).front()->name);
+    return names;
+}
+
+void showInScreen(ui::MainWindow& window) {
+    window.setGeometry(QGuiApplication::primaryScreen()->availableGeometry());
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    QTest::qWait(120); // the docks settle after the first layout
+}
+
+} // namespace
+
+class TestLayoutFit : public QObject {
+    Q_OBJECT
+    QFont baseFont_;
+private slots:
+    void initTestCase() {
+        baseFont_ = QApplication::font();
+        const QRect available = QGuiApplication::primaryScreen()->availableGeometry();
+        QVERIFY2(available.size() == kScreen,
+                 qPrintable(QString("runs on a 1024×700 screen (tests/CMakeLists.txt), not %1×%2")
+                                .arg(available.width())
+                                .arg(available.height())));
+    }
+    void init() { QSettings().clear(); }
+    void cleanup() {
+        QApplication::setFont(baseFont_);
+        QSettings().clear();
+    }
+
+    void firstWindowFitsTheScreen() {
+        const QSize size = programWindowSize(qEnvironmentVariable("XDG_CONFIG_HOME"));
+        qInfo("first window %dx%d on a %dx%d screen", size.width(), size.height(), kScreen.width(),
+              kScreen.height());
+        QVERIFY(!size.isEmpty());
+        QVERIFY2(size.width() <= kScreen.width() && size.height() <= kScreen.height(),
+                 "the first window is larger than the screen");
+        QVERIFY2(size.width() >= 0.9 * kScreen.width(),
+                 "the first window leaves most of a small screen unused");
+    }
+
+    void sizeComesBack_data() {
+        QTest::addColumn<QSize>("size");
+        QTest::newRow("small") << QSize(800, 560);
+        QTest::newRow("large") << QSize(1000, 680);
+    }
+    void sizeComesBack() {
+        QFETCH(QSize, size);
+        {
+            ui::MainWindow window;
+            QVERIFY(window.openPreset("gas-classroom"));
+            window.resize(size);
+            window.show();
+            QVERIFY(QTest::qWaitForWindowExposed(&window));
+            QTest::qWait(50);
+            QCOMPARE(window.size(), size);
+            window.document()->setModified(false);
+            QVERIFY(window.close()); // as the user closes it: the settings are written
+        }
+        const QSize next = programWindowSize(qEnvironmentVariable("XDG_CONFIG_HOME"));
+        QCOMPARE(next, size);
+    }
+
+    void plotsKeepAReadableHeight_data() {
+        QTest::addColumn<QString>("preset");
+        QTest::addColumn<bool>("projector");
+        for (const BuiltinPreset& builtin : builtinPresets())
+            for (bool projector : {false, true})
+                QTest::newRow(
+                    qPrintable(QString::fromStdString(builtin.name) + (projector ? " projector" : "")))
+                    << QString::fromStdString(builtin.name) << projector;
+    }
+    void plotsKeepAReadableHeight() {
+        QFETCH(QString, preset);
+        QFETCH(bool, projector);
+        ui::MainWindow window;
+        QVERIFY(window.openPreset(preset));
+        showInScreen(window);
+        window.setProjectorMode(projector);
+        QTest::qWait(150);
+        QStringList parts; // what takes the height, for the log
+        for (QWidget* part : window.findChildren<QWidget*>(QString(), Qt::FindDirectChildrenOnly))
+            if (part->isVisible() && (qobject_cast<QDockWidget*>(part) || qobject_cast<QToolBar*>(part) ||
+                                      part == window.menuBar() || part == window.statusBar()))
+                parts << QString("%1 %2+%3 (min %4)")
+                             .arg(part->objectName())
+                             .arg(part->y())
+                             .arg(part->height())
+                             .arg(part->minimumSizeHint().height());
+        qInfo("window %dx%d, minimum %d: %s", window.width(), window.height(),
+              window.minimumSizeHint().height(), qPrintable(parts.join(", ")));
+        const QRect screen = QGuiApplication::primaryScreen()->availableGeometry();
+        QVERIFY2(screen.contains(window.frameGeometry()),
+                 qPrintable(QString("the window grew to %1×%2").arg(window.width()).arg(window.height())));
+        int plots = 0;
+        for (QDockWidget* dock : window.findChildren<QDockWidget*>()) {
+            if (!dock->isVisible() || dock->isFloating() || dock->objectName() == "parametersDock") continue;
+            // Each drawing (a plot of one or two panels) that the dock shows now, not one in a hidden tab.
+            for (QCustomPlot* canvas : dock->findChildren<QCustomPlot*>()) {
+                if (!canvas->isVisible() || canvas->visibleRegion().isEmpty()) continue;
+                ++plots;
+                const int panels = std::max(1, canvas->axisRectCount());
+                QVERIFY2(canvas->height() >= kReadablePlotHeight * panels,
+                         qPrintable(QString("%1: %2 panel(s) in %3 px")
+                                        .arg(dock->objectName())
+                                        .arg(panels)
+                                        .arg(canvas->height())));
+            }
+        }
+        QVERIFY2(plots > 0, "no plot shown");
+        QVERIFY(window.viewport()->width() >= 0.4 * window.width());
+        window.setProjectorMode(false);
+        window.document()->setModified(false);
+    }
+
+    void noToolBarItemOverflows_data() {
+        QTest::addColumn<QString>("preset");
+        QTest::addColumn<QString>("language");
+        QTest::addColumn<bool>("projector");
+        for (const QString& name : onePresetPerKind())
+            for (const QString language : {"en", "de"})
+                for (bool projector : {false, true})
+                    QTest::newRow(
+                        qPrintable(QString("%1 %2%3").arg(name, language, projector ? " projector" : "")))
+                        << name << language << projector;
+    }
+    void noToolBarItemOverflows() {
+        QFETCH(QString, preset);
+        QFETCH(QString, language);
+        QFETCH(bool, projector);
+        QVERIFY(ui::installLanguage(language)); // before the window: its texts are translated once
+        ui::MainWindow window;
+        QVERIFY(window.openPreset(preset));
+        showInScreen(window);
+        window.setProjectorMode(projector);
+        QTest::qWait(150);
+        QCOMPARE(window.width(), kScreen.width());
+        for (QToolBar* bar : window.findChildren<QToolBar*>()) {
+            if (!bar->isVisible()) continue;
+            qInfo("%s at %d,%d: %d px, needs %d", qPrintable(bar->objectName()), bar->x(), bar->y(),
+                  bar->width(), bar->sizeHint().width());
+            // QToolBar puts what does not fit behind its extension button ("»").
+            for (QToolButton* more : bar->findChildren<QToolButton*>("qt_toolbar_ext_button"))
+                QVERIFY2(!more->isVisible(), qPrintable(bar->objectName() + " overflows"));
+            for (QAction* action : bar->actions()) {
+                QWidget* item = bar->widgetForAction(action);
+                if (!action->isVisible() || action->isSeparator() || !item) continue;
+                QVERIFY2(item->isVisible() && bar->rect().contains(item->geometry()),
+                         qPrintable(QString("%1: %2 is not shown").arg(bar->objectName(), action->text())));
+            }
+        }
+        window.setProjectorMode(false);
+        window.document()->setModified(false);
+        ui::installLanguage("en");
+    }
+};
+
+// The settings live in a scratch XDG_CONFIG_HOME under the program's own names, so the program started
+// by the test reads what this process's window wrote.
+int main(int argc, char** argv) {
+    QTemporaryDir config;
+    qputenv("XDG_CONFIG_HOME", config.path().toUtf8());
+    QApplication app(argc, argv);
+    QApplication::setApplicationName("ParticleLab");
+    QApplication::setOrganizationName("ParticleLab");
+    TestLayoutFit test;
+    return QTest::qExec(&test, argc, argv);
+}
+
+#include "tst_layout_fit.moc"
