@@ -2,12 +2,12 @@
 // tracks names, paths and the modified flag around it.
 #include "ExperimentDocument.h"
 
+#include "FileDialogs.h"
 #include "SimulationController.h"
 #include "catalog/ModelCatalog.h"
 #include "common/AtomicFile.h"
 
 #include <QDir>
-#include <QFileDialog>
 #include <QFileInfo>
 #include <QMessageBox>
 #include <QSettings>
@@ -130,16 +130,16 @@ bool ExperimentDocument::saveAs() {
     QDir().mkpath(userPresetDirectory());
     // .particlelab: the experiment's own file type (resources/desktop/particlelab.xml), which opens in
     // ParticleLab from a file manager; the content is the same JSON as a .json preset's.
-    const QString suggested = QDir(userPresetDirectory()).filePath(label_ + ".particlelab");
-    const QString path = QFileDialog::getSaveFileName(parent_, tr("Save preset"), suggested,
-                                                      tr("Experiments (*.particlelab);;Presets (*.json)"));
+    const QString path =
+        files::saveFileName(parent_, files::Place::Experiments, tr("Save preset"), label_ + ".particlelab",
+                            tr("Experiments (*.particlelab);;Presets (*.json)"));
     return !path.isEmpty() && saveTo(path);
 }
 
 bool ExperimentDocument::saveTo(const QString& path) {
     const Model* model = controller_->model();
     if (!model) return false;
-    Preset preset = model->toPreset();
+    Preset preset = controller_->experimentPreset(); // with the values that wait for Reset
     preset.name = QFileInfo(path).completeBaseName().toStdString();
     preset.description = meta_.description;
     try {

@@ -75,8 +75,12 @@ MainWindow::MainWindow(QWidget* parent)
     connect(controller_, &SimulationController::modelReplaced, this, &MainWindow::modelChanged);
     connect(controller_, &SimulationController::frameAdvanced, this, &MainWindow::updateStatus);
     connect(controller_, &SimulationController::failed, this, [this](const QString& message) {
+        updateRunActions(); // the viewport says to Reset; Play would do nothing
         QMessageBox::warning(this, tr("The simulation stopped"), message);
     });
+    connect(controller_, &SimulationController::parametersChanged, this, &MainWindow::updateRunActions);
+    // A body dragged into the shock tube brings the forces dock; the last one removed takes it away.
+    connect(controller_, &SimulationController::edited, this, &MainWindow::showDocksThatApply);
     connect(controller_, &SimulationController::runningChanged, this, [this](bool running) {
         playAction_->setText(running ? tr("Pause") : tr("Play"));
         playAction_->setIcon(style()->standardIcon(running ? QStyle::SP_MediaPause : QStyle::SP_MediaPlay));
@@ -147,6 +151,7 @@ void MainWindow::createDocks() {
         seriesPlots_.push_back(plot);
         QDockWidget* dock =
             addDock(plot, spec.title, spec.objectName + "Dock", Qt::RightDockWidgetArea, spec.kinds);
+        dock->setProperty("needsBodies", spec.needsBodies);
         if (previous) tabifyDockWidget(previous, dock);
         previous = dock;
     }
@@ -172,15 +177,19 @@ void MainWindow::createDocks() {
     lab->hide();
 }
 
-void MainWindow::modelChanged() {
+bool MainWindow::dockApplies(const QDockWidget* dock) const {
     const Model* model = controller_->model();
-    if (!model) return;
-    const QString kind = QString::fromStdString(model->kind());
-    scenePicker_->setCurrentIndex(scenePicker_->findData(kind));
+    if (!model) return false;
+    const QStringList kinds = dock->property("kinds").toStringList();
+    const SceneTools* tools = controller_->tools();
+    return (kinds.isEmpty() || kinds.contains(QString::fromStdString(model->kind()))) &&
+           (!dock->property("needsFields").toBool() || model->sampledFields()) &&
+           (!dock->property("needsBodies").toBool() || (tools && !tools->obstacles().empty()));
+}
+
+void MainWindow::showDocksThatApply() {
     for (QDockWidget* dock : findChildren<QDockWidget*>()) {
-        const QStringList kinds = dock->property("kinds").toStringList();
-        const bool applies = (kinds.isEmpty() || kinds.contains(kind)) &&
-                             (!dock->property("needsFields").toBool() || model->sampledFields());
+        const bool applies = dockApplies(dock);
         dock->toggleViewAction()->setEnabled(applies);
         if (!applies && !dock->isHidden()) {
             hiddenForScene_.insert(dock);
@@ -189,22 +198,40 @@ void MainWindow::modelChanged() {
             dock->show();
         }
     }
+}
+
+void MainWindow::modelChanged() {
+    const Model* model = controller_->model();
+    if (!model) return;
+    const QString kind = QString::fromStdString(model->kind());
+    scenePicker_->setCurrentIndex(scenePicker_->findData(kind));
+    showDocksThatApply();
     // The scene's first series dock comes to the front of the tabbed stack.
-    for (SeriesPlot* plot : seriesPlots_)
-        if (plot->spec().kinds.contains(kind)) {
-            if (auto* dock = findChild<QDockWidget*>(plot->spec().objectName + "Dock")) dock->raise();
+    for (SeriesPlot* plot : seriesPlots_) {
+        auto* dock = findChild<QDockWidget*>(plot->spec().objectName + "Dock");
+        if (dock && dockApplies(dock)) {
+            dock->raise();
             break;
         }
+    }
     tools_->setEnabled(controller_->model()->tools() != nullptr);
     heat_->setEnabled(controller_->model()->tools() != nullptr);
     // An imported run is shown, not run: what would change it is off until a preset is opened.
     const bool ours = !controller_->isReadOnly();
     for (QAction* action : std::as_const(runActions_)) action->setEnabled(ours);
+    updateRunActions();
     speed_->setEnabled(ours);
     parameters_->setEnabled(ours);
     viewportCore_->zoomToFit();
     updateStatus();
     if (room_) room_->refit(); // the Show chooser and the scene's docks come and go
+}
+
+void MainWindow::updateRunActions() {
+    const Model* model = controller_->model();
+    const bool runnable = model && !controller_->isReadOnly() && !model->failure();
+    playAction_->setEnabled(runnable);
+    stepAction_->setEnabled(runnable);
 }
 
 void MainWindow::documentChanged() {

@@ -91,6 +91,11 @@ private:
     void writeSettings() const;
     void modelChanged();
     void documentChanged();
+    // Each dock shows only where it has something to show: the scene's kind, sampled fields, bodies.
+    bool dockApplies(const QDockWidget* dock) const;
+    void showDocksThatApply();
+    // Play and Step are off while an imported run is shown or after a blow-up (until Reset).
+    void updateRunActions();
     void updateStatus();
     void fillPresetPicker();
     void fillRecentMenu();
@@ -117,6 +122,7 @@ private:
     QAction* recordAction_ = nullptr;
     QLabel* recordingLabel_ = nullptr; // "● REC 0:03.2" while a clip is recorded
     QAction* playAction_ = nullptr;
+    QAction* stepAction_ = nullptr;
     QList<QAction*> runActions_; // play, step, reset, speed: off while an imported run is shown
     QAction* projectorAction_ = nullptr;
     QAction* presentAction_ = nullptr;

@@ -1,6 +1,7 @@
 // MainWindow's actions, menus and tool bars. Every toolbar action has a shortcut and a tooltip.
 #include "BenchmarkDialog.h"
 #include "ExperimentDocument.h"
+#include "FileDialogs.h"
 #include "MainWindow.h"
 #include "PreferencesDialog.h"
 #include "SimulationController.h"
@@ -15,7 +16,6 @@
 #include <QApplication>
 #include <QComboBox>
 #include <QDir>
-#include <QFileDialog>
 #include <QFileInfo>
 #include <QLabel>
 #include <QLocale>
@@ -53,9 +53,9 @@ void MainWindow::createActions() {
     if (!newMenu->actions().isEmpty()) newMenu->actions().front()->setShortcut(QKeySequence::New);
     connect(menuAction(file, tr("&Open preset…"), QKeySequence::Open, tr("Open a preset file")),
             &QAction::triggered, this, [this] {
-                const QString path = QFileDialog::getOpenFileName(
-                    this, tr("Open preset"), ExperimentDocument::userPresetDirectory(),
-                    tr("Experiments and snapshots (*.particlelab *.plsnap *.json)"));
+                const QString path =
+                    files::openFileName(this, files::Place::Experiments, tr("Open preset"),
+                                        tr("Experiments and snapshots (*.particlelab *.plsnap *.json)"));
                 if (!path.isEmpty()) document_->open(path);
             });
     recentMenu_ = file->addMenu(tr("Open &recent"));
@@ -68,19 +68,18 @@ void MainWindow::createActions() {
     connect(menuAction(file, tr("Save sna&pshot…"), QKeySequence(Qt::CTRL | Qt::ALT | Qt::Key_S),
                        tr("Save the experiment with every particle, to continue exactly where it is")),
             &QAction::triggered, this, [this] {
-                QDir().mkpath(ExperimentDocument::userPresetDirectory());
-                const QString path = QFileDialog::getSaveFileName(
-                    this, tr("Save snapshot"),
-                    QDir(ExperimentDocument::userPresetDirectory()).filePath(document_->title() + ".plsnap"),
-                    tr("Snapshots (*.plsnap *.json)"));
+                const QString path =
+                    files::saveFileName(this, files::Place::Experiments, tr("Save snapshot"),
+                                        document_->title() + ".plsnap", tr("Snapshots (*.plsnap *.json)"));
                 if (!path.isEmpty()) document_->saveSnapshotTo(path);
             });
     file->addSeparator();
     connect(menuAction(file, tr("Save viewport &image…"), QKeySequence(Qt::CTRL | Qt::Key_E),
                        tr("Save what the viewport shows as a PNG")),
             &QAction::triggered, this, [this] {
-                const QString path = QFileDialog::getSaveFileName(
-                    this, tr("Save viewport image"), document_->title() + ".png", tr("PNG image (*.png)"));
+                const QString path =
+                    files::saveFileName(this, files::Place::Exports, tr("Save viewport image"),
+                                        document_->title() + ".png", tr("PNG image (*.png)"));
                 if (path.isEmpty()) return;
                 const QString error = saveViewportImage(path);
                 if (!error.isEmpty()) QMessageBox::critical(this, tr("Cannot save the image"), error);
@@ -111,6 +110,7 @@ void MainWindow::createActions() {
     QAction* step = menuAction(sim, tr("Step"), Qt::Key_Period, tr("Advance one time step"));
     step->setIcon(style()->standardIcon(QStyle::SP_MediaSkipForward));
     connect(step, &QAction::triggered, controller_, &SimulationController::stepOnce);
+    stepAction_ = step;
     QAction* reset = menuAction(sim, tr("Reset"), QKeySequence(Qt::CTRL | Qt::Key_R),
                                 tr("Restart from the initial state with the current parameters"));
     reset->setIcon(style()->standardIcon(QStyle::SP_BrowserReload));
@@ -205,6 +205,19 @@ void MainWindow::createActions() {
     presentAction_->setObjectName("presentAction");
     presentAction_->setCheckable(true);
     connect(presentAction_, &QAction::toggled, this, [this](bool on) { present_->setActive(on); });
+    // The particles' colours: the scale follows the gas as it is heated, or stays the model's fixed one.
+    QAction* colourScale = menuAction(viewMenu_, tr("&Automatic colour scale"), QKeySequence(),
+                                      tr("The top of the colour scale follows the particles as they heat up; "
+                                         "off: the scene's fixed scale, so heating shows as redder colours"));
+    colourScale->setObjectName("automaticColourScaleAction");
+    colourScale->setCheckable(true);
+    colourScale->setChecked(QSettings().value("view/automaticColourScale", true).toBool());
+    viewportCore_->colourScale().setAutomatic(colourScale->isChecked());
+    connect(colourScale, &QAction::toggled, this, [this](bool on) {
+        viewportCore_->colourScale().setAutomatic(on);
+        QSettings().setValue("view/automaticColourScale", on);
+        viewportCore_->requestFrame();
+    });
     viewChooser_ = new ViewChooser(controller_, viewMenu_, this);
     connect(viewChooser_, &ViewChooser::problem, this,
             [this](const QString& problem) { statusBar()->showMessage(problem, 6000); });

@@ -2,6 +2,7 @@
 // `particlelab-cli export lammps`, `run-lammps` and `import lammps`; this file asks for folders, runs
 // LAMMPS off the GUI thread and reports.
 #include "ExperimentDocument.h"
+#include "FileDialogs.h"
 #include "MainWindow.h"
 #include "SimulationController.h"
 #include "scaleout/LammpsDeck.h"
@@ -17,7 +18,6 @@
 #include <memory>
 
 #include <QDir>
-#include <QFileDialog>
 #include <QFileInfo>
 #include <QMenu>
 #include <QMessageBox>
@@ -34,8 +34,8 @@ void MainWindow::createLammpsActions(QMenu* file) {
     exportAction->setObjectName("exportLammpsAction");
     exportAction->setStatusTip(tr("Write the gas in its current state as a LAMMPS deck into a folder"));
     connect(exportAction, &QAction::triggered, this, [this] {
-        const QString dir = QFileDialog::getExistingDirectory(this, tr("Export to LAMMPS: choose a folder"),
-                                                              QDir::homePath());
+        const QString dir =
+            files::existingFolder(this, files::Place::Exports, tr("Export to LAMMPS: choose a folder"));
         if (dir.isEmpty()) return;
         const QString problem = exportToLammps(dir);
         if (!problem.isEmpty()) QMessageBox::warning(this, tr("Cannot export to LAMMPS"), problem);
@@ -45,8 +45,9 @@ void MainWindow::createLammpsActions(QMenu* file) {
     openAction->setStatusTip(tr("Show a LAMMPS run of an exported deck (log.lammps and its dump) read-only"));
     connect(openAction, &QAction::triggered, this, [this] {
         if (!document_->maybeSave()) return;
-        const QString dir = QFileDialog::getExistingDirectory(
-            this, tr("Open LAMMPS run: choose the deck's folder after LAMMPS ran in it"), QDir::homePath());
+        const QString dir =
+            files::existingFolder(this, files::Place::Exports,
+                                  tr("Open LAMMPS run: choose the deck's folder after LAMMPS ran in it"));
         if (dir.isEmpty()) return;
         const QString problem = openLammpsRun(dir);
         if (!problem.isEmpty()) QMessageBox::warning(this, tr("Cannot open the LAMMPS run"), problem);
@@ -98,8 +99,9 @@ void MainWindow::createRunOnLammpsAction(QMenu* sim) {
     run->setObjectName("runOnLammpsAction");
     run->setStatusTip(tr("Export the gas, run it with mpirun and LAMMPS, and open the run"));
     connect(run, &QAction::triggered, this, [this] {
-        const QString dir = QFileDialog::getExistingDirectory(
-            this, tr("Run on LAMMPS: choose a folder for the deck and LAMMPS's output"), QDir::homePath());
+        const QString dir =
+            files::existingFolder(this, files::Place::Exports,
+                                  tr("Run on LAMMPS: choose a folder for the deck and LAMMPS's output"));
         if (dir.isEmpty()) return;
         bool ok = false;
         const int ranks = QInputDialog::getInt(this, tr("Run on LAMMPS"), tr("MPI ranks:"), 2, 1,

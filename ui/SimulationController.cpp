@@ -100,44 +100,13 @@ void SimulationController::setBackend(gl::Backend backend) {
     if (!model_ || isReadOnly()) return; // the next experiment loaded computes there
     const bool wasRunning = isRunning();
     pause();
-    const QString problem = load(model_->toPreset());
+    const QString problem = load(experimentPreset());
     if (!problem.isEmpty())
         emit notice(problem);
     else
         emit notice(tr("Computing on the %1 now; the experiment restarted from its parameters.")
                         .arg(model_->backend() == "gl" ? tr("GPU") : tr("CPU")));
     if (wasRunning) play();
-}
-
-QString SimulationController::setParameters(const ParamValues& values) {
-    if (!model_) return tr("No experiment is loaded.");
-    if (isReadOnly()) return tr("This run is read-only: open a preset to change parameters.");
-    try {
-        model_->setParams(values);
-    } catch (const ParamError& e) { // in the panel's words: each parameter by its label
-        const auto& specs = model_->paramSpecs();
-        return QString::fromStdString(nameParameters(e.message(), [&specs](const std::string& key) {
-            const ParamSpec* spec = findSpec(specs, key);
-            return spec ? spec->label : key;
-        }));
-    } catch (const std::exception& e) {
-        return QString::fromStdString(e.what());
-    }
-    // A value set back to the one the state was built with waits for nothing.
-    for (const auto& [key, value] : values) {
-        const ParamSpec* spec = findSpec(model_->paramSpecs(), key);
-        if (!spec || spec->appliesLive) continue;
-        const auto applied = applied_.find(key);
-        if (applied != applied_.end() && applied->second == value)
-            pending_.erase(key);
-        else
-            pending_[key] = value;
-    }
-    // Show (the `view` of a scene with sampled fields) chooses what is drawn, not the experiment.
-    const bool viewOnly = values.size() == 1 && values.begin()->first == ViewChooser::kKey;
-    if (!viewOnly) noteEdited();
-    emit parametersChanged();
-    return {};
 }
 
 void SimulationController::noteEdited() {
@@ -267,17 +236,6 @@ void SimulationController::watchSteps(int every, std::function<void()> atStep) {
 void SimulationController::stepModel() {
     model_->step();
     if (watchEvery_ > 0 && !model_->failure() && model_->stepCount() % watchEvery_ == 0) watch_();
-}
-
-void SimulationController::reset() {
-    if (!model_ || isReadOnly()) return;
-    model_->reset();
-    pending_.clear();
-    applied_ = model_->params();
-    applyDirection();
-    restartSeries();
-    emit parametersChanged();
-    emit frameAdvanced();
 }
 
 void SimulationController::setStepsPerFrame(int n) {

@@ -75,8 +75,13 @@ public:
 
     // Applies parameter values (all or nothing). Returns the error naming the key, or empty.
     QString setParameters(const ParamValues& values);
-    // Parameters changed since the last reset that only a reset applies.
+    // Parameters changed since the last reset that only a reset applies. The model keeps the values its
+    // state was built with until then (SimulationParameters.cpp).
     const ParamValues& pendingUntilReset() const { return pending_; }
+    // The values the user set: the model's, with those that wait for Reset. What the panel shows.
+    ParamValues parameterValues() const;
+    // The experiment as set up: the model's preset with the values that wait for Reset (saved, rebuilt).
+    Preset experimentPreset() const;
     // Something the user did changed the experiment (tools, parameters): the document is modified.
     void noteEdited();
 

@@ -42,6 +42,8 @@ struct PlotSpec {
     std::string title; // the dock's title
     PlotPanel upper;
     PlotPanel lower;
+    // Shown only while the scene has a body: the forces on none would read 0 (the shock tube).
+    bool needsBodies = false;
 };
 
 // The units a kind's parameters, series and presets are written in: one system per kind, declared in its

@@ -4,6 +4,7 @@
 
 #include "Obstacle.h"
 
+#include <algorithm>
 #include <array>
 #include <optional>
 #include <string>
@@ -40,6 +41,8 @@ struct SceneFieldImage {
     ColourMap colours = ColourMap::Thermal;
     std::string label;               // legend title with unit, e.g. "Mach number"
     double minimum = 0, maximum = 1; // physical values at the ends of the colour scale
+    long long sampledSteps = 0;      // steps the values average over
+    long long window = 0;            // a moving window's length in steps; 0: since sampling began
 };
 
 struct SceneView {
@@ -64,7 +67,9 @@ struct SceneView {
     std::optional<SceneFieldImage> field; // a colour map under the particles (the wind tunnel's fields)
     bool drawParticles = true;            // false while a field hides them
 
-    std::size_t size() const { return x.size(); }
+    // The particles every array describes: a kind that fills one array short (a forgotten radius) draws
+    // fewer particles instead of reading past its end; tst_model_contract requires equal lengths.
+    std::size_t size() const { return std::min({x.size(), y.size(), radius.size(), value.size()}); }
 };
 
 } // namespace pl

@@ -22,7 +22,7 @@ const ModelDescriptor& dsmcRegistration() {
         .plots = {{"temperaturesPlot",
                    "Temperatures",
                    {"temperature [K]", {{"Tx", "T_x", kBlue}, {"T_perp", "T_⊥", kOrange}, {"T", "T", kGrey}}},
-                   {"T_x − T_⊥ [K]", {{"anisotropy", "anisotropy", kRed}}, true}},
+                   {"|T_x − T_⊥| [K]", {{"anisotropy", "anisotropy", kRed}}, true}},
                   {"momentsPlot",
                    "Moments",
                    {"M_2k / M_2k(eq)",

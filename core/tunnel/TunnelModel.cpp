@@ -156,7 +156,7 @@ void TunnelModel::reset() {
 
 void TunnelModel::restartSampling() {
     sampleFrom_ = stepCount() + params_.sampleStart;
-    sampler_.restart();
+    sampler_.setWindow(params_.sampleWindow); // empties it
 }
 
 void TunnelModel::paramsChanged(const TunnelParams& before) {

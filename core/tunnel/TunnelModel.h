@@ -147,7 +147,7 @@ protected:
     // reorder, the arrays themselves are put in cell order (order_ is then the identity).
     void sortIntoCells(bool reorder = false);
     void collide(double h); // TunnelCollide.cpp: NTC per cell
-    void restartSampling(); // the window waits sampleStart steps again
+    void restartSampling(); // the window waits sampleStart steps again, sampleWindow steps long
     // The CPU-only ends of step(), which a GPU step calls in the same order: the obstacles' and the
     // piston's drives (returns the piston's velocity over the step), then the fields and forces' step.
     double advanceBodies(double h);

@@ -195,8 +195,8 @@ std::vector<NamedHistogram> TunnelModel::histograms() const {
     speed.label = "all molecules";
     speed.axis = "speed [m/s]";
     std::ostringstream summary;
-    summary << "the whole domain: " << state_.size()
-            << " molecules (free stream, shock layer and wake together)";
+    summary << "the whole domain: " << state_.size() << " molecules";
+    if (!obstacles_.empty()) summary << " (free stream, shock layer and wake together)";
     speed.summary = summary.str();
     speed.counts = Histogram(0.0, 1.5 * colourMaxOf(params_), kHistogramBins);
     for (std::size_t i = 0; i < state_.size(); ++i)
@@ -256,6 +256,8 @@ SceneView TunnelModel::sceneFrame() const {
         const auto [lo, hi] = colourRange(grid.values);
         image.minimum = lo;
         image.maximum = hi;
+        image.sampledSteps = sampler_.sampledSteps();
+        image.window = sampler_.window();
         const double span = hi > lo ? hi - lo : 1.0;
         image.value.resize(grid.values.size());
         for (std::size_t c = 0; c < grid.values.size(); ++c)

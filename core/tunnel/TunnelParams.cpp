@@ -18,6 +18,11 @@ constexpr double kMaxCells = 1 << 22; // 4 M cells: the per-cell arrays stay bel
 constexpr double kBytesPerMolecule = 72.0;
 // NTC state, open fractions, the sampler's sums (measured: about 100 B a cell from 40 k to 640 k cells).
 constexpr double kBytesPerCell = 128.0;
+constexpr double kBytesPerOlderHalf = 56.0; // a moving window's older half: seven sums a cell
+
+double bytesPerCell(const TunnelParams& p) {
+    return kBytesPerCell + (p.sampleWindow > 0 ? kBytesPerOlderHalf : 0.0);
+}
 } // namespace
 
 double TunnelParams::maxParticles() {
@@ -27,7 +32,7 @@ double TunnelParams::maxParticles() {
 double TunnelParams::moleculeLimit() const {
     const double cells = static_cast<double>(cellsX) * static_cast<double>(cellsY);
     const double room =
-        (kUsableMemoryShare * availableMemoryBytes() - cells * kBytesPerCell) / kBytesPerMolecule;
+        (kUsableMemoryShare * availableMemoryBytes() - cells * bytesPerCell(*this)) / kBytesPerMolecule;
     return std::max(0.0, std::min(maxParticles(), std::floor(room)));
 }
 
@@ -41,8 +46,9 @@ void TunnelParams::validate() const {
                                         " cells exceed the limit of " +
                                         std::to_string(static_cast<long long>(kMaxCells)));
     const double cells = static_cast<double>(cellsX) * static_cast<double>(cellsY);
-    requireMemory({cells * kBytesPerCell, "cells_x", [](double fitting) {
-                       return "use at most " + formatNumber(fitting / kBytesPerCell, 3) +
+    const double perCell = bytesPerCell(*this);
+    requireMemory({cells * perCell, "cells_x", [perCell](double fitting) {
+                       return "use at most " + formatNumber(fitting / perCell, 3) +
                               " cells ({cells_x} × {cells_y})";
                    }});
     // The free stream filling the whole domain must fit (the count settles near it in a tunnel).
@@ -155,6 +161,12 @@ const std::vector<ParamField<TunnelParams>>& TunnelParams::fields() {
                                 makeSpec("sample_start", "Sampling starts after", "steps", sampling,
                                          "Steps after a reset or an edit before the fields are averaged.", 0,
                                          1e9, 50, double(d.sampleStart), true)));
+        f.push_back(bindInteger(
+            &P::sampleWindow, makeSpec("sample_window", "Sampling window", "steps", sampling,
+                                       "The fields and mean forces show the most recent steps only (between "
+                                       "half and all of this many), so a moving shock shows where it is; 0: "
+                                       "every step since sampling started, for a steady flow.",
+                                       0, 1e9, 50, double(d.sampleWindow), true)));
         f.push_back(bindChoice(&P::view, makeChoice("view", "View", sampling,
                                                     "particles, or a sampled field as a colour map.", true)));
         return f;

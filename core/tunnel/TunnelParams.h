@@ -71,6 +71,10 @@ struct TunnelParams {
 
     // Sampling and view
     long long sampleStart = 200; // steps after a reset or an edit before the fields window opens
+    // Steps the fields and mean forces average over, the most recent (between half and all of them) for a
+    // flow that changes; 0: every step since the window opened, for a steady flow. Typical 100 for the
+    // shock tube; 0 … 1e9.
+    long long sampleWindow = 0;
     TunnelView view = TunnelView::Particles;
 
     double mass() const;          // [kg]

@@ -26,7 +26,8 @@ const ModelDescriptor& tunnelRegistration() {
                    "Forces on the bodies",
                    {"drag [N/m]", {{"drag", "drag", kBlue}, {"drag_avg", "drag, window mean", kBlue, true}}},
                    {"lift [N/m]",
-                    {{"lift", "lift", kOrange}, {"lift_avg", "lift, window mean", kOrange, true}}}},
+                    {{"lift", "lift", kOrange}, {"lift_avg", "lift, window mean", kOrange, true}}},
+                   true}, // needsBodies: no forces dock in the shock tube or Couette flow
                   {"particlesPlot",
                    "Molecules",
                    {"simulated molecules", {{"particles", "molecules", kBlue}}},

@@ -37,6 +37,12 @@ std::vector<BodyForce> meanForces(const std::vector<double>& sumX, const std::ve
     return forces;
 }
 
+// b's sums added to a's, entry by entry (b may be shorter: bodies added since).
+std::vector<double> plus(std::vector<double> a, const std::vector<double>& b) {
+    for (std::size_t i = 0; i < std::min(a.size(), b.size()); ++i) a[i] += b[i];
+    return a;
+}
+
 // Full precision (17 significant digits round-trip a double); NaN as `nan` whatever its sign bit.
 void writeNumber(std::ostream& out, double value) {
     if (std::isnan(value))
@@ -54,8 +60,10 @@ void TunnelSampler::configure(const SamplingGrid& grid) {
         throw std::invalid_argument("TunnelSampler: one open fraction per cell");
     // A new grid is a new run: every sum starts again, the surface's too. (grid may be grid_ itself.)
     SamplingGrid next = grid;
+    const std::int64_t window = window_;
     *this = TunnelSampler{};
     grid_ = std::move(next);
+    window_ = window;
     cells_.assign(std::size_t(grid_.nx) * std::size_t(grid_.ny), CellSums{});
 }
 
@@ -64,6 +72,30 @@ void TunnelSampler::restart() {
     steps_ = 0;
     std::fill(sumForceX_.begin(), sumForceX_.end(), 0.0);
     std::fill(sumForceY_.begin(), sumForceY_.end(), 0.0);
+    forceSteps_ = 0;
+    previous_.clear();
+    previousSteps_ = 0;
+    previousForceX_.clear();
+    previousForceY_.clear();
+    previousForceSteps_ = 0;
+}
+
+void TunnelSampler::setWindow(std::int64_t steps) {
+    if (steps < 0) throw std::invalid_argument("TunnelSampler: the window needs 0 or more steps");
+    window_ = steps;
+    restart();
+}
+
+void TunnelSampler::rotateWindow() {
+    previous_.swap(cells_);
+    cells_.assign(previous_.size(), CellSums{});
+    previousSteps_ = steps_;
+    steps_ = 0;
+    previousForceX_.swap(sumForceX_);
+    previousForceY_.swap(sumForceY_);
+    sumForceX_.assign(previousForceX_.size(), 0.0);
+    sumForceY_.assign(previousForceY_.size(), 0.0);
+    previousForceSteps_ = forceSteps_;
     forceSteps_ = 0;
 }
 
@@ -109,7 +141,7 @@ void TunnelSampler::endStep(std::size_t bodies, double dt) {
     sumForceX_.resize(bodies, 0.0), sumForceY_.resize(bodies, 0.0);
     intervalForceX_.resize(bodies, 0.0), intervalForceY_.resize(bodies, 0.0);
     last_.assign(bodies, BodyForce{});
-    const bool windowOpen = steps_ > 0;
+    const bool windowOpen = sampledSteps() > 0;
     for (std::size_t b = 0; b < bodies; ++b) {
         // The gas gained Σ m Δv fn over dt; the body feels the opposite, F = −Σ/dt [N/m]
         // (docs/wind-tunnel.md#sampling).
@@ -122,10 +154,13 @@ void TunnelSampler::endStep(std::size_t bodies, double dt) {
     if (windowOpen) ++forceSteps_;
     std::fill(impulseX_.begin(), impulseX_.end(), 0.0);
     std::fill(impulseY_.begin(), impulseY_.end(), 0.0);
+    if (window_ > 0 && steps_ >= (window_ + 1) / 2) rotateWindow();
 }
 
 std::vector<BodyForce> TunnelSampler::averageForces() const {
-    return meanForces(sumForceX_, sumForceY_, forceSteps_);
+    if (previousForceSteps_ == 0) return meanForces(sumForceX_, sumForceY_, forceSteps_);
+    return meanForces(plus(sumForceX_, previousForceX_), plus(sumForceY_, previousForceY_),
+                      forceSteps_ + previousForceSteps_);
 }
 
 std::vector<BodyForce> TunnelSampler::lastForces() const {
@@ -152,11 +187,18 @@ std::vector<FieldChoice> TunnelSampler::fieldChoices() const {
 TunnelSampler::CellFieldValues TunnelSampler::cellFields(std::size_t c) const {
     CellFieldValues f;
     f.fill(kNaN);
-    const CellSums& s = cells_[c];
+    CellSums s = cells_[c];
+    if (previousSteps_ > 0) { // a moving window: both halves
+        const CellSums& older = previous_[c];
+        s.count += older.count;
+        s.mx += older.mx, s.my += older.my, s.mz += older.mz;
+        s.ex += older.ex, s.ey += older.ey, s.ez += older.ez;
+    }
+    const std::int64_t steps = sampledSteps();
     const double open = grid_.openFraction.empty() ? 1.0 : grid_.openFraction[c];
-    if (s.count <= 0 || steps_ == 0 || !(open > 0)) return f;
+    if (s.count <= 0 || steps == 0 || !(open > 0)) return f;
     const double dx = (grid_.right - grid_.left) / grid_.nx, dy = (grid_.top - grid_.bottom) / grid_.ny;
-    f[kN] = (s.count / double(steps_)) * grid_.fn / (dx * dy * open);
+    f[kN] = (s.count / double(steps)) * grid_.fn / (dx * dy * open);
     f[kUx] = s.mx / s.count, f[kUy] = s.my / s.count;
     const double uz = s.mz / s.count;
     const double mOverK = grid_.mass / kBoltzmann;

@@ -41,6 +41,11 @@ public:
     const SamplingGrid& grid() const { return grid_; }
     // Empties the window (fields and surface sums); the next addState() starts it again.
     void restart();
+    // A moving window for flows that change: the fields and the mean forces cover only the most recent
+    // steps, between half and all of `steps` (two halves; the older is dropped when the newer is full).
+    // 0: every step since the window opened (a steady flow). Empties the window.
+    void setWindow(std::int64_t steps);
+    std::int64_t window() const { return window_; }
 
     // Adds the state after one step to the cell sums (each particle in the cell of state.cell[i]).
     void addState(const TunnelState& state);
@@ -63,7 +68,8 @@ public:
     // sampleStart steps after a reset or an edit on.
     void endStep(std::size_t bodies, double dt);
 
-    std::int64_t sampledSteps() const { return steps_; }
+    // Steps the fields average over now (both halves of a moving window).
+    std::int64_t sampledSteps() const { return steps_ + previousSteps_; }
     // The force on each body averaged over the window [N/m]; and over the last step alone. One entry per
     // body of the last endStep(); zero forces while the window has no step.
     std::vector<BodyForce> averageForces() const;
@@ -96,6 +102,8 @@ private:
     // A cell's fields in the order of fieldChoices().
     using CellFieldValues = std::array<double, 8>;
     CellFieldValues cellFields(std::size_t cell) const;
+    // The newer half of a moving window is full: it becomes the older one.
+    void rotateWindow();
 
     SamplingGrid grid_;
     std::vector<CellSums> cells_;
@@ -107,6 +115,12 @@ private:
     std::vector<double> intervalForceX_, intervalForceY_;
     std::int64_t intervalSteps_ = 0;
     std::vector<BodyForce> previousInterval_; // what the last takeIntervalForces() gave
+    // A moving window's older half (empty, 0 steps, for a window over the whole run).
+    std::int64_t window_ = 0;
+    std::vector<CellSums> previous_;
+    std::int64_t previousSteps_ = 0;
+    std::vector<double> previousForceX_, previousForceY_;
+    std::int64_t previousForceSteps_ = 0;
 };
 
 } // namespace pl

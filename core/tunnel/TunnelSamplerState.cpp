@@ -1,7 +1,7 @@
 // The sampler's part of a tunnel snapshot: the fields window (its step count and the seven sums of every
-// cell), the surface sums of the window, the last step's forces and the series' open interval. Without
-// them a resumed run showed empty fields, restarted drag_avg at 0 and reopened the window only
-// sample_start steps later (docs/wind-tunnel.md#snapshots).
+// cell, and a moving window's older half), the surface sums of the window, the last step's forces and the
+// series' open interval. Without them a resumed run showed empty fields, restarted drag_avg at 0 and reopened
+// the window only sample_start steps later (docs/wind-tunnel.md#snapshots).
 #include "TunnelSampler.h"
 
 #include <algorithm>
@@ -61,6 +61,17 @@ void TunnelSampler::save(StateRecord& r) const {
     r.put("force_interval_lift", intervalForceY_);
     r.put("force_previous_interval_drag", component(previousInterval_, &BodyForce::drag));
     r.put("force_previous_interval_lift", component(previousInterval_, &BodyForce::lift));
+    if (previousSteps_ == 0 && previousForceSteps_ == 0) return; // a window over the whole run
+    // A moving window's older half, under the same names with "_older".
+    r.put("sampling_steps_older", static_cast<double>(previousSteps_));
+    for (const auto& sum : kCellSums) {
+        std::vector<double> values(previous_.size());
+        for (std::size_t c = 0; c < previous_.size(); ++c) values[c] = previous_[c].*sum.member;
+        r.put(std::string(sum.key) + "_older", values);
+    }
+    r.put("force_window_steps_older", static_cast<double>(previousForceSteps_));
+    r.put("force_window_older_drag", previousForceX_);
+    r.put("force_window_older_lift", previousForceY_);
 }
 
 void TunnelSampler::restore(const StateRecord& r) {
@@ -84,6 +95,29 @@ void TunnelSampler::restore(const StateRecord& r) {
     next.intervalForceX_ = component(interval, &BodyForce::drag);
     next.intervalForceY_ = component(interval, &BodyForce::lift);
     next.previousInterval_ = forcesOf(r, "force_previous_interval");
+    next.previous_.clear();
+    next.previousSteps_ = 0;
+    next.previousForceX_.clear();
+    next.previousForceY_.clear();
+    next.previousForceSteps_ = 0;
+    if (r.has("sampling_steps_older")) {
+        next.previousSteps_ = r.count("sampling_steps_older");
+        next.previous_.assign(cells_.size(), CellSums{});
+        for (const auto& sum : kCellSums) {
+            const std::vector<double> values =
+                r.array<double>(std::string(sum.key) + "_older", cells_.size());
+            for (std::size_t c = 0; c < cells_.size(); ++c) next.previous_[c].*sum.member = values[c];
+        }
+        for (std::size_t c = 0; c < cells_.size(); ++c)
+            if (!(next.previous_[c].count >= 0))
+                throw PresetError("state.sampling_count_older", "state.sampling_count_older[" +
+                                                                    std::to_string(c) +
+                                                                    "] must not be negative");
+        next.previousForceSteps_ = r.count("force_window_steps_older");
+        const std::vector<BodyForce> older = forcesOf(r, "force_window_older");
+        next.previousForceX_ = component(older, &BodyForce::drag);
+        next.previousForceY_ = component(older, &BodyForce::lift);
+    }
     // Between steps every impulse has gone into the sums.
     std::fill(next.impulseX_.begin(), next.impulseX_.end(), 0.0);
     std::fill(next.impulseY_.begin(), next.impulseY_.end(), 0.0);

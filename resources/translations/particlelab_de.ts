@@ -989,8 +989,8 @@ Wirkt nach „Zurücksetzen“.</translation>
         <translation>T_x</translation>
     </message>
     <message>
-        <source>T_x − T_⊥ [K]</source>
-        <translation>T_x − T_⊥ [K]</translation>
+        <source>|T_x − T_⊥| [K]</source>
+        <translation>|T_x − T_⊥| [K]</translation>
     </message>
     <message>
         <source>T_⊥</source>

@@ -267,7 +267,8 @@ private slots:
         const QString err = QString::fromUtf8(p.readAllStandardError());
         QCOMPARE(p.exitCode(), 130);
         QVERIFY2(ms < 1000, qPrintable(QString("the run took %1 ms to stop").arg(ms)));
-        QVERIFY2(err.contains("stopped by SIGINT at step 0") && err.contains("the 1 row sampled"), qPrintable(err));
+        QVERIFY2(err.contains("stopped by SIGINT at step 0") && err.contains("the 1 row sampled"),
+                 qPrintable(err));
         QCOMPARE(readLines(series).size(), 2);
     }
 

@@ -141,6 +141,22 @@ private slots:
         QVERIFY(!model.failure());
     }
 
+    // What a viewport draws: one position, radius and colour value per particle, and particles in view.
+    void sceneViewDescribesEveryParticle_data() {
+        kindsAndBackends();
+    }
+    void sceneViewDescribesEveryParticle() {
+        PL_CONTRACT_MODEL(made);
+        for (int s = 0; s < 3; ++s) model.step();
+        const SceneView view = model.sceneView();
+        if (view.gpu) return; // the device's buffers, drawn without a copy
+        QCOMPARE(view.x.size(), model.particleCount());
+        QCOMPARE(view.y.size(), view.x.size());
+        QCOMPARE(view.radius.size(), view.x.size());
+        QCOMPARE(view.value.size(), view.x.size());
+        QVERIFY(view.left < view.right && view.bottom < view.top);
+    }
+
     // Saved as text, read back and continued: on the CPU reference the trajectories agree bit for bit
     // with the run that never stopped. A GPU model restores the clock and the particles (its float
     // buffers and atomics make no promise of bit identity between two GPU runs).

@@ -1,5 +1,7 @@
-// Plot export: PNG decodes at the chosen size and DPI, SVG is an SVG document, PDF starts with %PDF,
-// CSV parses back to the plotted points; bad paths and formats give errors and leave no file behind.
+// Plot export: a PNG has exactly the pixels asked for, its DPI as metadata and scale; SVG is an SVG
+// document, PDF starts with %PDF, CSV parses back to the plotted points; bad paths and formats give errors
+// and leave no file behind. The file dialogs start in the folder used last, else the documents folder.
+#include "FileDialogs.h"
 #include "plots/PlotExport.h"
 
 #include <QTemporaryDir>
@@ -16,6 +18,9 @@ private:
 
 private slots:
     void initTestCase() {
+        QStandardPaths::setTestModeEnabled(true); // settings in a test folder, never the user's
+        QCoreApplication::setOrganizationName("ParticleLab");
+        QCoreApplication::setApplicationName("tst_plotexport");
         plot_.setObjectName("testPlot");
         QCPGraph* graph = plot_.addGraph();
         graph->setName("sine, sampled");
@@ -29,15 +34,33 @@ private slots:
 
     void pngHasTheChosenSizeAndResolution() {
         const QString path = dir_.filePath("plot.png");
-        QVERIFY(savePlotImage(&plot_, path, {QSize(600, 400), 192}).isEmpty());
+        QVERIFY(savePlotImage(&plot_, path, {QSize(1200, 800), 150}).isEmpty());
         QImage image(path);
         QVERIFY(!image.isNull());
-        QCOMPARE(image.size(), QSize(1200, 800)); // 192 DPI = twice the 96-DPI logical size
-        QCOMPARE(qRound(image.dotsPerMeterX() * 0.0254), 192);
+        QCOMPARE(image.size(), QSize(1200, 800)); // the pixels the dialog names, whatever the DPI
+        QCOMPARE(qRound(image.dotsPerMeterX() * 0.0254), 150);
         QSet<QRgb> colours;
         for (int y = 0; y < image.height(); y += 8)
             for (int x = 0; x < image.width(); x += 8) colours.insert(image.pixel(x, y));
         QVERIFY(colours.size() > 3); // axes, curve and bars were drawn
+    }
+
+    // The DPI scales the drawing on the same pixels: at 192 DPI the tick labels take twice the margin.
+    void aHigherDpiDrawsLargerOnTheSamePixels() {
+        auto axisColumn = [this](int dpi) {
+            const QString path = dir_.filePath(QString("dpi%1.png").arg(dpi));
+            if (!savePlotImage(&plot_, path, {QSize(800, 600), dpi}).isEmpty()) return -1;
+            const QImage image = QImage(path).convertToFormat(QImage::Format_RGB32);
+            for (int x = 0; x < image.width(); ++x) { // the left axis: a dark line down most of the height
+                int dark = 0;
+                for (int y = 0; y < image.height(); ++y) dark += qGray(image.pixel(x, y)) < 100;
+                if (dark > image.height() / 2) return x;
+            }
+            return -1;
+        };
+        const int at96 = axisColumn(96), at192 = axisColumn(192);
+        QVERIFY2(at96 > 0 && at192 > 0, qPrintable(QString("%1 %2").arg(at96).arg(at192)));
+        QVERIFY2(at192 > 1.6 * at96 && at192 < 2.4 * at96, qPrintable(QString("%1 %2").arg(at96).arg(at192)));
     }
 
     void svgIsAnSvgDocument() {
@@ -87,6 +110,52 @@ private slots:
         QVERIFY(!savePlotCsv(&plot_, "/nonexistent/dir/plot.csv").isEmpty());
         QVERIFY(!savePlotImage(&plot_, dir_.filePath("tiny.png"), {QSize(4, 4), 96}).isEmpty());
         QVERIFY(!QFile::exists(dir_.filePath("tiny.png")));
+    }
+
+    // A fresh account: exports start in the documents folder (its home when it has none), never in the
+    // program's working directory; experiments in the user's preset folder.
+    void dialogsStartInTheDocumentsFolder() {
+        QSettings().clear();
+        const QString documents = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
+        QCOMPARE(files::startFolder(files::Place::Exports),
+                 QFileInfo(documents).isDir() ? documents : QDir::homePath());
+        QVERIFY(files::startFolder(files::Place::Experiments).endsWith("presets"));
+        QVERIFY(files::startFolder(files::Place::Exports) != QDir::currentPath());
+    }
+
+    // The folder chosen in one dialog is where the next one of its place opens, until it vanishes.
+    void dialogsStartInTheFolderUsedLast() {
+        QSettings().clear();
+        QTemporaryDir chosen;
+        const QString target = QDir(chosen.path()).filePath("exports");
+        QVERIFY(QDir().mkpath(target));
+        QString openedIn;
+        QTimer driver; // answers the modal dialog as a user would: type a name in another folder, Save
+        connect(&driver, &QTimer::timeout, this, [&] {
+            auto* dialog = qobject_cast<QFileDialog*>(QApplication::activeModalWidget());
+            if (!dialog) return;
+            driver.stop();
+            openedIn = dialog->directory().absolutePath();
+            dialog->selectFile(QDir(target).filePath("plot.png"));
+            QMetaObject::invokeMethod(dialog, "accept"); // Save, as a click would
+        });
+        const QString firstStart = files::startFolder(files::Place::Exports);
+        driver.start(50);
+        const QString path = files::saveFileName(nullptr, files::Place::Exports, "Save plot image",
+                                                 "plot.png", "PNG image (*.png)");
+        QCOMPARE(QFileInfo(path).absolutePath(), QFileInfo(target).absoluteFilePath());
+        QCOMPARE(openedIn, QFileInfo(firstStart).absoluteFilePath());
+        QCOMPARE(files::startFolder(files::Place::Exports), QFileInfo(target).absoluteFilePath());
+        QVERIFY(files::startFolder(files::Place::Experiments) != files::startFolder(files::Place::Exports));
+
+        driver.start(50); // the next export dialog opens where the last one saved
+        QVERIFY(!files::saveFileName(nullptr, files::Place::Exports, "Export plot data", "plot.csv",
+                                     "CSV table (*.csv)")
+                     .isEmpty());
+        QCOMPARE(openedIn, QFileInfo(target).absoluteFilePath());
+
+        QVERIFY(QDir(target).removeRecursively()); // a folder that is gone: back to the default
+        QVERIFY(files::startFolder(files::Place::Exports) != QFileInfo(target).absoluteFilePath());
     }
 };
 

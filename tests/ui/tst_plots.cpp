@@ -1,5 +1,6 @@
 // Every plot of every built-in preset, in normal and projector mode, under a real X server: no legend
 // covers a data point or a bar, no value-axis label runs past its axis (into a title or the next panel),
+// every axis with data has tick values, a log axis loses no point of a quantity that changes sign,
 // and after time has run backwards the time series still advance to the right, the backward stretch
 // dotted. Each plot is saved as a PNG to look at.
 #include "ExperimentDocument.h"
@@ -62,6 +63,22 @@ QStringList problemsOf(QCustomPlot* plot) {
             if (!legend->visible() || legend->itemCount() == 0) continue;
             if (const int covered = dataUnder(rect, legend->outerRect()))
                 problems << QString("a legend covers %1 data points").arg(covered);
+        }
+        // Values a reader can read off: at least two labelled ticks on each axis that has data.
+        for (QCPAxis* axis : {rect->axis(QCPAxis::atLeft), rect->axis(QCPAxis::atBottom)})
+            if (!axis->plottables().isEmpty() && axis->tickVector().size() < 2)
+                problems << QString("the axis '%1' has %2 tick values")
+                                .arg(axis->label())
+                                .arg(axis->tickVector().size());
+        // A log axis drops points at or below 0: a quantity that changes sign shows |x| instead.
+        for (QCPGraph* graph : rect->graphs()) {
+            if (!graph->visible() || graph->valueAxis()->scaleType() != QCPAxis::stLogarithmic) continue;
+            int dropped = 0;
+            for (auto it = graph->data()->constBegin(); it != graph->data()->constEnd(); ++it)
+                dropped += std::isfinite(it->value) && it->value <= 0;
+            if (dropped)
+                problems
+                    << QString("'%1' has %2 points its log axis cannot show").arg(graph->name()).arg(dropped);
         }
         QCPAxis* y = rect->axis(QCPAxis::atLeft);
         const double length = QFontMetricsF(y->labelFont()).horizontalAdvance(y->label());

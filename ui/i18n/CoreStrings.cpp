@@ -65,6 +65,7 @@ std::vector<std::string> coreDisplayStrings() {
             add(spec.unit); // mostly symbols that stay as they are, but some are words ("steps")
             add(spec.group);
             add(spec.tooltip);
+            for (const std::string& choice : spec.choices) add(choice); // shown translated, kept as keys
         }
         // The series docks' titles, axes and legends.
         for (const PlotSpec& plot : info.plots) {

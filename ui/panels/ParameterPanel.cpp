@@ -156,7 +156,7 @@ QWidget* ParameterPanel::createEditor(const ParamSpec& spec) {
         box->setIncrement(spec.kind == ParamKind::Integer ? std::max(spec.step, 1.0) : spec.step);
         box->setReportsUnreadableText(true);
         connect(box, &QDoubleSpinBox::editingFinished, this, [this, key, box] {
-            if (box->value() == std::get<double>(controller_->model()->params().at(key)))
+            if (box->value() == std::get<double>(controller_->parameterValues().at(key)))
                 clearProblem(key); // typed back the value in use
             else
                 apply(key, box->value());
@@ -190,11 +190,13 @@ QWidget* ParameterPanel::createEditor(const ParamSpec& spec) {
         auto* box = new QComboBox(content_);
         box->setFocusPolicy(Qt::StrongFocus);
         box->installEventFilter(this);
-        for (const auto& choice : spec.choices) box->addItem(QString::fromStdString(choice));
+        // The choice in the UI's language; the key (presets, --set) as the item's data.
+        for (const auto& choice : spec.choices)
+            box->addItem(coreText(choice), QString::fromStdString(choice));
         connect(box, &QComboBox::activated, this,
-                [this, key, box](int) { apply(key, box->currentText().toStdString()); });
+                [this, key, box](int) { apply(key, box->currentData().toString().toStdString()); });
         setters_[key] = [box](const ParamValue& v) {
-            box->setCurrentText(QString::fromStdString(std::get<std::string>(v)));
+            box->setCurrentIndex(box->findData(QString::fromStdString(std::get<std::string>(v))));
         };
         return box;
     }
@@ -264,7 +266,7 @@ void ParameterPanel::showValue(const std::string& key) {
     const auto setter = setters_.find(key);
     if (setter == setters_.end()) return;
     const QSignalBlocker block(editors_.at(key));
-    setter->second(controller_->model()->params().at(key));
+    setter->second(controller_->parameterValues().at(key));
 }
 
 QWidget* ParameterPanel::editor(const std::string& key) const {
@@ -275,7 +277,7 @@ QWidget* ParameterPanel::editor(const std::string& key) const {
 void ParameterPanel::showValues() {
     const Model* model = controller_->model();
     if (!model) return;
-    for (const auto& [key, value] : model->params()) {
+    for (const auto& [key, value] : controller_->parameterValues()) {
         const auto it = setters_.find(key);
         if (it == setters_.end() || !problem(key).isEmpty()) continue; // a rejected field keeps its text
         const QSignalBlocker block(editors_.at(key));

@@ -43,7 +43,10 @@ DistributionPlot::DistributionPlot(SimulationController* controller, const QStri
     controls->setContentsMargins(6, 2, 6, 0);
     controls->addWidget(new QLabel(tr("Average over"), this));
     window_->setRange(1, 200);
-    window_->setSuffix(tr(" samples"));
+    // "1 sample", "2 samples"; German "1 Stichprobe", "2 Stichproben".
+    const auto suffix = [this](int n) { window_->setSuffix(tr(" sample(s)", "after the number", n)); };
+    connect(window_, &QSpinBox::valueChanged, this, suffix);
+    suffix(window_->value());
     window_->setToolTip(tr("Time-averages the bars over the last samples (about 20 per second of running)"));
     controls->addWidget(window_);
     controls->addStretch(1);

@@ -1,4 +1,4 @@
-// ExportImageDialog: width and height in logical pixels, DPI (PNG pixels = size × DPI / 96).
+// ExportImageDialog: width and height in pixels (a PNG has exactly these), and the DPI.
 #include "ExportImageDialog.h"
 
 #include <QDialogButtonBox>
@@ -20,7 +20,9 @@ ExportImageDialog::ExportImageDialog(QSize initialSize, bool raster, QWidget* pa
     dpi_->setRange(24, 1200);
     dpi_->setValue(150);
     dpi_->setSuffix(tr(" DPI"));
-    dpi_->setToolTip(raster ? tr("PNG pixels = size × DPI / 96") : tr("Resolution recorded in the file"));
+    dpi_->setToolTip(
+        raster ? tr("The PNG has exactly the pixels above; a higher DPI draws text and lines larger on them")
+               : tr("Resolution recorded in the file"));
     form->addRow(tr("Width"), width_);
     form->addRow(tr("Height"), height_);
     form->addRow(tr("Resolution"), dpi_);

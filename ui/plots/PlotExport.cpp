@@ -2,8 +2,8 @@
 #include "PlotExport.h"
 
 #include "ExportImageDialog.h"
+#include "FileDialogs.h"
 
-#include <QFileDialog>
 #include <QFileInfo>
 #include <QMenu>
 #include <QMessageBox>
@@ -12,6 +12,8 @@
 #include <QSvgGenerator>
 #include <QTextStream>
 #include <qcustomplot.h>
+
+#include <algorithm>
 
 namespace pl::ui {
 
@@ -23,9 +25,21 @@ QString commitOrError(QSaveFile& file) {
 }
 
 QString renderPng(QCustomPlot* plot, QSaveFile& file, const ImageExportOptions& o) {
+    // The file has exactly the pixels the dialog names. The DPI scales the plot's 96-DPI layout onto
+    // them (text and lines twice as large at 192 DPI) and is stored as the image's resolution.
     const double scale = o.dpi / 96.0;
-    QPixmap pixmap = plot->toPixmap(o.size.width(), o.size.height(), scale);
-    QImage image = pixmap.toImage();
+    const int logicalWidth = std::max(1, qRound(o.size.width() / scale));
+    const int logicalHeight = std::max(1, qRound(o.size.height() / scale));
+    QImage image(o.size, QImage::Format_ARGB32_Premultiplied);
+    image.fill(Qt::transparent); // toPainter fills the plot's own background
+    QCPPainter painter;
+    if (!painter.begin(&image)) return QObject::tr("Cannot start the PNG renderer.");
+    painter.setMode(QCPPainter::pmNoCaching);
+    if (scale > 1.0) painter.setMode(QCPPainter::pmNonCosmetic); // lines grow with the text
+    painter.scale(o.size.width() / static_cast<double>(logicalWidth),
+                  o.size.height() / static_cast<double>(logicalHeight));
+    plot->toPainter(&painter, logicalWidth, logicalHeight);
+    painter.end();
     const int dotsPerMetre = static_cast<int>(o.dpi / 0.0254 + 0.5);
     image.setDotsPerMeterX(dotsPerMetre);
     image.setDotsPerMeterY(dotsPerMetre);
@@ -119,8 +133,8 @@ QString savePlotCsv(QCustomPlot* plot, const QString& path) {
 
 void exportPlotImageInteractively(QCustomPlot* plot, QWidget* parent) {
     QString filter;
-    const QString path = QFileDialog::getSaveFileName(
-        parent, QObject::tr("Save plot image"), plot->objectName() + ".png",
+    const QString path = files::saveFileName(
+        parent, files::Place::Exports, QObject::tr("Save plot image"), plot->objectName() + ".png",
         QObject::tr("PNG image (*.png);;SVG drawing (*.svg);;PDF document (*.pdf)"), &filter);
     if (path.isEmpty()) return;
     ExportImageDialog dialog(plot->size(), QFileInfo(path).suffix().toLower() == "png", parent);
@@ -130,9 +144,8 @@ void exportPlotImageInteractively(QCustomPlot* plot, QWidget* parent) {
 }
 
 void exportPlotCsvInteractively(QCustomPlot* plot, QWidget* parent) {
-    const QString path =
-        QFileDialog::getSaveFileName(parent, QObject::tr("Export plot data"), plot->objectName() + ".csv",
-                                     QObject::tr("CSV table (*.csv)"));
+    const QString path = files::saveFileName(parent, files::Place::Exports, QObject::tr("Export plot data"),
+                                             plot->objectName() + ".csv", QObject::tr("CSV table (*.csv)"));
     if (path.isEmpty()) return;
     const QString error = savePlotCsv(plot, path);
     if (!error.isEmpty()) QMessageBox::critical(parent, QObject::tr("Cannot export the data"), error);

@@ -11,8 +11,8 @@ class QWidget;
 namespace pl::ui {
 
 struct ImageExportOptions {
-    QSize size{800, 600}; // logical size of the plot [px at 96 dpi]
-    int dpi = 150;        // resolution of PNGs; PDFs and SVGs are vector graphics
+    QSize size{800, 600}; // a PNG's pixels; an SVG's or PDF's size in px at 96 dpi
+    int dpi = 150;        // a PNG's resolution: scales text and lines, stored in the file
 };
 
 // Format from the suffix (.png, .svg, .pdf). Returns an error sentence, or empty on success.

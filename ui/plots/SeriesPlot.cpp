@@ -147,12 +147,17 @@ void SeriesPlot::refresh() {
                 }
         }
         QCPGraph* graph = plot_->graph(b.graph);
+        // A log axis shows magnitudes (its label says |x|), so a quantity that changes sign keeps its line;
+        // the legend keeps the signed value.
+        QVector<double> shown = values;
+        if (graph->valueAxis()->scaleType() == QCPAxis::stLogarithmic)
+            for (double& v : shown) v = std::abs(v);
         if (b.backGraph >= 0) {
             QCPGraph* back = plot_->graph(b.backGraph);
-            reversed ? back->setData(xs, directionPart(times, values, true), true) : back->data()->clear();
-            graph->setData(xs, reversed ? directionPart(times, values, false) : values, true);
+            reversed ? back->setData(xs, directionPart(times, shown, true), true) : back->data()->clear();
+            graph->setData(xs, reversed ? directionPart(times, shown, false) : shown, true);
         } else {
-            graph->setData(xs, values, b.column < 0);
+            graph->setData(xs, shown, b.column < 0);
         }
         // A column that is NaN throughout (kT of an absent species) stays out of the plot and legend.
         const bool any = std::any_of(values.begin(), values.end(), [](double v) { return std::isfinite(v); });

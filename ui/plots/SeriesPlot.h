@@ -41,7 +41,8 @@ struct SeriesPlotSpec {
     QString title;      // the dock's title
     QStringList kinds;  // model kinds that have these columns
     SeriesPanel upper;
-    SeriesPanel lower; // no curves: no lower panel
+    SeriesPanel lower;        // no curves: no lower panel
+    bool needsBodies = false; // the dock shows only while the scene has a body
 };
 
 class SeriesPlot : public QWidget {

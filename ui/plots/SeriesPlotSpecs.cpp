@@ -31,7 +31,8 @@ const std::vector<SeriesPlotSpec>& seriesPlotSpecs() {
                                 coreText(plot.title),
                                 {QString::fromStdString(model.kind)},
                                 panelOf(plot.upper),
-                                panelOf(plot.lower)});
+                                panelOf(plot.lower),
+                                plot.needsBodies});
         return list;
     }();
     return specs;

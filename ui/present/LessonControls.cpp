@@ -202,7 +202,7 @@ void LessonControls::addHeatSlider(QVBoxLayout* group) {
 void LessonControls::addParticleCount(QVBoxLayout* group) {
     // Particle number: the experiment restarts with N disks at the temperature it has now, so the class
     // compares pressures at equal kT. Spawning could only add disks, and is refused where they overlap.
-    const ParamValues values = controller_->model()->params();
+    const ParamValues values = controller_->parameterValues();
     const double na = number(values, "count_a", 0), nb = number(values, "count_b", 0);
     const double total = std::max(1.0, na + nb);
     const double da = number(values, "diameter_a", 0), db = number(values, "diameter_b", 0);
@@ -255,7 +255,7 @@ void LessonControls::addGravitySlider(QVBoxLayout* group, double maximum) {
     QSlider* slider = addSlider(group, tr("Gravity"), &value);
     slider->setObjectName("lessonGravity");
     slider->setRange(0, kSliderSteps);
-    const double now = std::abs(number(controller_->model()->params(), "gravity", 0));
+    const double now = std::abs(number(controller_->parameterValues(), "gravity", 0));
     slider->setValue(static_cast<int>(std::lround(kSliderSteps * std::min(1.0, now / maximum))));
     value->setText(QString::number(now, 'g', 3));
     connect(slider, &QSlider::valueChanged, this, [this, maximum, value](int v) {
@@ -272,7 +272,7 @@ void LessonControls::addGravitySwitch(QVBoxLayout* group) {
     group->addLayout(switches);
     QPushButton* gravity = addButton(switches, tr("Gravity on"), "lessonGravitySwitch");
     gravity->setCheckable(true);
-    const ParamValues values = controller_->model()->params();
+    const ParamValues values = controller_->parameterValues();
     const auto on = values.find("gravity_on");
     gravity->setChecked(on != values.end() && std::holds_alternative<bool>(on->second) &&
                         std::get<bool>(on->second));
@@ -355,7 +355,7 @@ void LessonControls::addFieldButtons() {
 void LessonControls::applyParticleCount(int total) {
     Model* model = controller_->model();
     if (!model) return;
-    const ParamValues values = model->params();
+    const ParamValues values = controller_->parameterValues(); // with a count that waits for Reset
     const double na = number(values, "count_a", 0), nb = number(values, "count_b", 0);
     if (static_cast<int>(na + nb) == total) return;
     const double fractionA = na + nb > 0 ? na / (na + nb) : 1.0;

@@ -5,7 +5,10 @@
 #include "Palette.h"
 #include "i18n/Translations.h"
 
+#include <QCoreApplication>
 #include <QPainter>
+#include <algorithm>
+#include <climits>
 #include <cmath>
 
 namespace pl::ui {
@@ -95,7 +98,7 @@ void paintFieldLegend(QPainter& painter, const ViewTransform& transform, const S
     const QFontMetricsF metrics(painter.font());
     const double line = metrics.height();
     const double width = kLegendWidthLines * line;
-    const QRectF frame(transform.size().width() - width - kLegendMarginPx, top, width, 3.7 * line);
+    const QRectF frame(transform.size().width() - width - kLegendMarginPx, top, width, 4.7 * line);
     painter.setPen(Qt::NoPen);
     painter.setBrush(kLegendBack);
     painter.drawRoundedRect(frame, 4, 4);
@@ -109,6 +112,14 @@ void paintFieldLegend(QPainter& painter, const ViewTransform& transform, const S
     const QRectF labels(bar.left(), bar.bottom() + 0.1 * line, bar.width(), line);
     painter.drawText(labels, Qt::AlignLeft | Qt::AlignVCenter, formatFieldValue(field.minimum));
     painter.drawText(labels, Qt::AlignRight | Qt::AlignVCenter, formatFieldValue(field.maximum));
+    // Over how much time the picture is an average: a moving shock needs a short, moving window.
+    const int steps = static_cast<int>(std::min<long long>(field.sampledSteps, INT_MAX));
+    const QString averaged =
+        field.window > 0
+            ? QCoreApplication::translate("FieldOverlay", "mean of the last %n step(s)", nullptr, steps)
+            : QCoreApplication::translate("FieldOverlay", "mean of %n step(s)", nullptr, steps);
+    painter.drawText(labels.translated(0, line), Qt::AlignHCenter | Qt::AlignVCenter,
+                     metrics.elidedText(averaged, Qt::ElideRight, labels.width()));
 }
 } // namespace
 

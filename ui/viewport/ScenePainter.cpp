@@ -19,6 +19,26 @@ const QColor kObstacleFill(120, 128, 150);
 const QColor kObstacleHover(170, 178, 200);
 } // namespace
 
+void paintNotice(QPainter& painter, QRect area, const QString& text) {
+    painter.save();
+    QFont font = painter.font();
+    font.setBold(true);
+    painter.setFont(font);
+    const int margin = painter.fontMetrics().height();
+    const int width = std::max(margin * 4, std::min(area.width() - 2 * margin, margin * 30));
+    const QRect textBox = painter.fontMetrics().boundingRect(QRect(0, 0, width, area.height()),
+                                                             Qt::AlignCenter | Qt::TextWordWrap, text);
+    QRect box = textBox.adjusted(-margin / 2, -margin / 2, margin / 2, margin / 2);
+    box.moveTopLeft(QPoint(area.center().x() - box.width() / 2, area.top() + margin));
+    painter.setRenderHint(QPainter::Antialiasing);
+    painter.setPen(QPen(QColor(230, 120, 60), 2));
+    painter.setBrush(QColor(20, 22, 30, 230));
+    painter.drawRoundedRect(box, 6, 6);
+    painter.setPen(Qt::white);
+    painter.drawText(box, Qt::AlignCenter | Qt::TextWordWrap, text);
+    painter.restore();
+}
+
 void paintSceneParticles(QPainter& painter, const ViewTransform& transform, const SceneView& scene,
                          QRect clip) {
     if (!scene.drawParticles) return;

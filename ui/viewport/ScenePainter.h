@@ -9,6 +9,7 @@
 #include <QImage>
 #include <QRect>
 #include <QSize>
+#include <QString>
 #include <optional>
 
 class QPainter;
@@ -31,6 +32,10 @@ void paintSceneBodies(QPainter& painter, const ViewTransform& transform, const S
 // The piston, thicker while it is dragged.
 void paintScenePiston(QPainter& painter, const ViewTransform& transform, const SceneView& scene,
                       bool active = false);
+
+// A sentence the user must read before going on (the run stopped: Reset), in a dark box across the top
+// of `area`, wrapped to fit.
+void paintNotice(QPainter& painter, QRect area, const QString& text);
 
 // The whole scene at `size` pixels as the software viewport shows it untouched (no tool, no probe):
 // background, field, particles, bodies, piston and legends, fitted with kSceneMarginPx.

@@ -37,6 +37,7 @@ ViewportCore::ViewportCore(SimulationController* controller, QWidget* widget)
         hovered_.reset();
         steeredTo_.reset();
         probe_.reset();
+        colourScale_.restart();
         setProfileLine(std::nullopt); // another domain: the old line would mean nothing there
     });
     // A parameter such as the field shown changes the picture even while time stands still.
@@ -48,6 +49,7 @@ ViewportCore::ViewportCore(SimulationController* controller, QWidget* widget)
 void ViewportCore::beginPaint() {
     const Model* model = controller_->model();
     scene_ = !model ? SceneView{} : drawsGpuBuffers_ ? model->sceneViewSharingGpu() : model->sceneView();
+    colourScale_.apply(scene_);
     transform_.fit(scene_, widget_->size(), kSceneMarginPx);
 }
 
@@ -334,6 +336,10 @@ void ViewportCore::paintOverlay(QPainter& painter) const {
             paintProbe(painter, transform_.toWidget(probe_->x(), probe_->y()), text.front(), text.mid(1),
                        transform_.size());
     }
+    if (const Model* model = controller_->model(); model && model->failure())
+        paintNotice(painter, widget_->rect(),
+                    tr("The simulation stopped: its state is no longer physical. Press Reset (Ctrl+R) to "
+                       "start again, with a smaller time step if it happens again."));
 }
 
 void ViewportCore::paintSteeredTarget(QPainter& painter) const {

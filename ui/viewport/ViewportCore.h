@@ -4,6 +4,7 @@
 // probe, the profile line) and the frame-rate meter.
 #pragma once
 
+#include "ColourScale.h"
 #include "ViewTransform.h"
 #include "common/SceneView.h"
 
@@ -37,6 +38,8 @@ public:
     // Counts a finished frame for the frame-rate meter.
     void endPaint();
     const SceneView& scene() const { return scene_; }
+    // The particles' colour scale: automatic (follows a heated gas) or the model's fixed one.
+    ColourScale& colourScale() { return colourScale_; }
     // Set by a viewport that can draw particles straight from a GPU model's buffers (SceneView::gpu).
     void setDrawsGpuBuffers(bool on) { drawsGpuBuffers_ = on; }
     bool drawsGpuBuffers() const { return drawsGpuBuffers_; }
@@ -90,6 +93,7 @@ private:
     SimulationController* controller_;
     QWidget* widget_;
     SceneView scene_;
+    ColourScale colourScale_;
     ViewTransform transform_;
     ViewportTool tool_ = ViewportTool::Drag;
 

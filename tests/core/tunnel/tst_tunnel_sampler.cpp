@@ -360,6 +360,52 @@ private slots:
         QVERIFY(std::isnan(grid.at(std::nan(""), 0.1)));
         QVERIFY_THROWS_EXCEPTION(std::invalid_argument, profileAlong(grid, 0, 0, 1, 1, 1));
     }
+
+    // A moving window of 6 steps for flows that change. One particle per cell moves at the step's number
+    // s, and the bodies feel a drag of s: after every step the fields and the mean force are the mean of
+    // exactly the last 3 to 5 steps, and a sampler restored from a snapshot in between goes on the same.
+    void aMovingWindowAveragesTheRecentSteps() {
+        const auto stepOf = [](TunnelSampler& sampler, int s) {
+            TunnelState state;
+            for (int c = 0; c < kNx * kNy; ++c) {
+                state.append((c % kNx + 0.5) * kCell, (c / kNx + 0.5) * kCell, {double(s), 0.0, 0.0});
+                state.cell.back() = std::uint32_t(c);
+            }
+            sampler.addState(state);
+            sampler.addSurfaceImpulse(0, -double(s) / kFn, 0.0); // the body feels +s over dt = 1 s
+            sampler.endStep(1, 1.0);
+        };
+        TunnelSampler sampler;
+        sampler.configure(testGrid());
+        sampler.setWindow(6);
+        for (int s = 1; s <= 20; ++s) {
+            stepOf(sampler, s);
+            const std::int64_t k = sampler.sampledSteps();
+            QCOMPARE(k, std::int64_t(s < 3 ? s : 3 + s % 3)); // the older half of 3 and the newer one
+            const double mean = s - 0.5 * double(k - 1);      // of s − k + 1 … s
+            QCOMPARE(fieldValues(sampler, "ux")[0], mean);
+            QCOMPARE(sampler.averageForces()[0].drag, mean);
+        }
+        StateRecord record;
+        sampler.save(record);
+        TunnelSampler resumed;
+        resumed.configure(testGrid());
+        resumed.setWindow(6);
+        resumed.restore(record);
+        QCOMPARE(resumed.sampledSteps(), sampler.sampledSteps());
+        for (int s = 21; s <= 25; ++s) {
+            stepOf(sampler, s);
+            stepOf(resumed, s);
+            QCOMPARE(resumed.sampledSteps(), sampler.sampledSteps());
+            QCOMPARE(fieldValues(resumed, "ux"), fieldValues(sampler, "ux"));
+            QCOMPARE(resumed.averageForces()[0].drag, sampler.averageForces()[0].drag);
+        }
+        // A window over the whole run keeps every step.
+        sampler.setWindow(0);
+        for (int s = 1; s <= 20; ++s) stepOf(sampler, s);
+        QCOMPARE(sampler.sampledSteps(), std::int64_t(20));
+        QCOMPARE(fieldValues(sampler, "ux")[0], 10.5);
+    }
 };
 
 QTEST_GUILESS_MAIN(TestTunnelSampler)

@@ -1,0 +1,167 @@
+// Readouts tell the truth: a value that waits for Reset stays out of the simulated state (kT, pressure
+// and plots keep describing the disks as they move); Reset applies it and gives the preset's count back
+// after spawning; after a blow-up Play and Step are off and the viewport says to Reset; the colour scale
+// follows a heated gas unless fixed.
+#include "ExperimentDocument.h"
+#include "MainWindow.h"
+#include "SimulationController.h"
+#include "UiTestSupport.h"
+#include "panels/ParameterPanel.h"
+#include "viewport/ViewportCore.h"
+
+#include <QAbstractSpinBox>
+#include <QLineEdit>
+#include <QScrollArea>
+#include <QtTest>
+
+using namespace pl;
+
+namespace {
+
+void typeInto(QWidget* field, const QString& text) {
+    auto* box = qobject_cast<QAbstractSpinBox*>(field);
+    QVERIFY(box);
+    for (QWidget* w = box; w; w = w->parentWidget())
+        if (auto* scroll = qobject_cast<QScrollArea*>(w)) scroll->ensureWidgetVisible(box);
+    QLineEdit* edit = box->findChild<QLineEdit*>();
+    QTest::mouseClick(edit, Qt::LeftButton, {}, edit->rect().center());
+    QTest::keyClick(box, Qt::Key_A, Qt::ControlModifier);
+    QTest::keyClicks(box, text);
+    QTest::keyClick(box, Qt::Key_Return);
+}
+
+double lastValue(ui::MainWindow& window, const char* column) {
+    const int c = window.controller()->series()->column(column);
+    const QVector<double> values = window.controller()->series()->values(c);
+    return c < 0 || values.isEmpty() ? qQNaN() : values.back();
+}
+
+void runFrames(ui::MainWindow& window, int frames) {
+    for (int f = 0; f < frames; ++f) window.controller()->advanceFrame();
+    QTest::qWait(20);
+}
+
+// Pixels of the notice's orange frame (ScenePainter's paintNotice).
+int noticePixels(const QImage& image) {
+    int count = 0;
+    for (int y = 0; y < image.height(); y += 2)
+        for (int x = 0; x < image.width(); x += 2) {
+            const QColor c = image.pixelColor(x, y);
+            count += c.red() > 200 && c.green() > 90 && c.green() < 150 && c.blue() < 90;
+        }
+    return count;
+}
+
+} // namespace
+
+class TestReadouts : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase() { test::useCleanTestSettings(); }
+
+    // The case: Mass (A) = 25 typed in while the gas runs. Before, kT jumped 0.47 → 11.2 with the
+    // histogram unchanged; the mass now waits in the panel until Reset.
+    void aValueThatWaitsForResetLeavesTheReadoutsAlone() {
+        ui::MainWindow window;
+        QVERIFY(window.openPreset("gas-classroom"));
+        QVERIFY(test::showActive(window));
+        runFrames(window, 9);
+        const double kT = lastValue(window, "kT");
+        const double mass = std::get<double>(window.controller()->model()->params().at("mass_a"));
+        QVERIFY(kT > 0);
+
+        typeInto(window.parameters()->editor("mass_a"), "25");
+        QCOMPARE(std::get<double>(window.controller()->model()->params().at("mass_a")), mass);
+        QCOMPARE(std::get<double>(window.controller()->parameterValues().at("mass_a")), 25.0);
+        QCOMPARE(window.controller()->pendingUntilReset().size(), std::size_t(1));
+        QCOMPARE(qobject_cast<QAbstractSpinBox*>(window.parameters()->editor("mass_a"))->text(),
+                 QString("25"));
+        runFrames(window, 9);
+        QVERIFY2(std::abs(lastValue(window, "kT") / kT - 1) < 0.2,
+                 qPrintable(QString("kT %1 → %2").arg(kT).arg(lastValue(window, "kT"))));
+
+        window.controller()->reset(); // now the disks have it
+        QCOMPARE(std::get<double>(window.controller()->model()->params().at("mass_a")), 25.0);
+        QVERIFY(window.controller()->pendingUntilReset().empty());
+        window.document()->setModified(false);
+    }
+
+    // A saved preset keeps what was typed, also while it waits.
+    void aWaitingValueIsSavedWithThePreset() {
+        ui::MainWindow window;
+        QVERIFY(window.openPreset("gas-classroom"));
+        QVERIFY(window.controller()->setParameters({{"mass_a", 3.0}}).isEmpty());
+        QCOMPARE(std::get<double>(window.controller()->experimentPreset().params.at("mass_a")), 3.0);
+        window.document()->setModified(false);
+    }
+
+    // Spawned disks are a lesson's moment, not the experiment: Reset gives the preset's count back.
+    void resetGivesThePresetsCountBack() {
+        ui::MainWindow window;
+        QVERIFY(window.openPreset("gas-classroom"));
+        const std::size_t preset = window.controller()->model()->particleCount();
+        QVERIFY(window.controller()->model()->tools()->spawnInRectangle(-5, -5, 5, 5).starts_with("added"));
+        QVERIFY(window.controller()->model()->particleCount() > preset);
+        window.controller()->reset();
+        QCOMPARE(window.controller()->model()->particleCount(), preset);
+        // A count typed in is what Reset builds.
+        QVERIFY(window.controller()->setParameters({{"count_a", 1200.0}}).isEmpty());
+        window.controller()->reset();
+        QCOMPARE(window.controller()->model()->particleCount(), std::size_t(1200));
+        window.document()->setModified(false);
+    }
+
+    // A blow-up: Play, Space and Step do nothing until Reset, so they are off, and the viewport says why.
+    void afterABlowUpPlayIsOffAndTheViewportSaysReset() {
+        test::MessageBoxAnswerer dialogs;
+        ui::MainWindow window;
+        QVERIFY(window.openPreset("gas-classroom"));
+        QVERIFY(test::showActive(window));
+        auto* play = window.findChild<QAction*>("playAction");
+        QVERIFY(play && play->isEnabled());
+        QCOMPARE(noticePixels(window.viewportImage()), 0);
+        QVERIFY(window.controller()->setParameters({{"dt", 0.0056}}).isEmpty()); // dt·ω = 2.5 > 2
+        window.controller()->setStepsPerFrame(100);
+        for (int f = 0; f < 200 && !window.controller()->model()->failure(); ++f)
+            window.controller()->advanceFrame();
+        QVERIFY(window.controller()->model()->failure());
+        QTRY_VERIFY(!dialogs.texts.isEmpty()); // the dialog that names the cause
+        QVERIFY(!play->isEnabled());
+        QTest::keyClick(window.viewport(), Qt::Key_Space);
+        QVERIFY(!window.controller()->isRunning());
+        QVERIFY(noticePixels(window.viewportImage()) > 100);
+
+        QVERIFY(window.controller()->setParameters({{"dt", 0.002}}).isEmpty());
+        window.controller()->reset();
+        QVERIFY(!window.controller()->model()->failure());
+        QVERIFY(play->isEnabled());
+        QCOMPARE(noticePixels(window.viewportImage()), 0);
+        window.document()->setModified(false);
+    }
+
+    // Heated to about four times its temperature, the gas keeps a gradient of colours on the automatic
+    // scale; the fixed scale shows it red hot.
+    void theColourScaleFollowsAHeatedGas() {
+        ui::MainWindow window;
+        QVERIFY(window.openPreset("gas-classroom"));
+        QVERIFY(test::showActive(window));
+        ui::ViewportCore* core = window.viewportCore();
+        auto colourTop = [&] {
+            (void)window.viewportImage(); // a paint applies the scale
+            return core->scene().colourMax;
+        };
+        const double start = colourTop();
+        window.controller()->model()->tools()->scaleKineticEnergy(4.0);
+        for (int frame = 0; frame < 40; ++frame) colourTop(); // the scale settles over frames
+        QVERIFY2(colourTop() > 1.7 * start, qPrintable(QString("%1 → %2").arg(start).arg(colourTop())));
+        auto* automatic = window.findChild<QAction*>("automaticColourScaleAction");
+        QVERIFY(automatic && automatic->isChecked());
+        automatic->trigger();
+        QCOMPARE(colourTop(), start);
+        automatic->trigger();
+        window.document()->setModified(false);
+    }
+};
+
+QTEST_MAIN(TestReadouts)
+#include "tst_readouts.moc"
