@@ -1,16 +1,19 @@
-// MainWindow's recording and report: Simulation → Record clip (a checked tool-bar button while it
-// records, with the clip's length in the status bar) and File → Export report….
+// MainWindow's recording and report: Simulation → Record clip (the Record dialog, then the file; a checked
+// tool-bar button while it records, with the clip's length in the status bar; the last frames' encoding
+// with a progress dialog) and File → Export report….
 #include "MainWindow.h"
 
 #include "ExperimentDocument.h"
 #include "SimulationController.h"
 #include "record/AppRecorder.h"
+#include "record/RecordDialog.h"
 #include "report/LabReport.h"
 
 #include <QFileDialog>
 #include <QLabel>
 #include <QMenu>
 #include <QMessageBox>
+#include <QProgressDialog>
 #include <QStatusBar>
 #include <QToolBar>
 
@@ -49,23 +52,53 @@ void MainWindow::createRecordAction(QMenu* sim, QToolBar* bar) {
             recorder_->stop();
             return;
         }
-        const QString path =
-            QFileDialog::getSaveFileName(this, tr("Record clip"), document_->title() + ".mp4",
-                                         tr("MP4 video (*.mp4);;WebM video (*.webm);;GIF (*.gif)"));
-        const QString error = path.isEmpty() ? QString() : recorder_->start(path, document_->title());
+        recordAction_->setChecked(false); // until the clip starts
+        RecordDialog dialog(controller_, this);
+        if (dialog.exec() != QDialog::Accepted) return;
+        const QString chosen = QFileDialog::getSaveFileName(
+            this, tr("Record clip"), document_->title() + "." + clipSuffix(dialog.format()),
+            tr("MP4 video (*.mp4);;WebM video (*.webm);;GIF (*.gif)"));
+        const QString path = clipPathFor(chosen, dialog.format());
+        const QString error =
+            path.isEmpty() ? QString() : recorder_->start(path, document_->title(), dialog.options());
         if (!error.isEmpty()) QMessageBox::critical(this, tr("Cannot record"), error);
         recordAction_->setChecked(recorder_->isRecording());
     });
     connect(recorder_, &AppRecorder::recordingChanged, this, [this](bool on) {
         recordAction_->setChecked(on);
+        recordAction_->setEnabled(!recorder_->isDraining());
         recordAction_->setText(on ? tr("Stop recording") : tr("Record clip…"));
         recordingLabel_->setVisible(on);
         recordingLabel_->setText(tr("● REC %1 s").arg(0.0, 0, 'f', 1));
     });
     connect(recorder_, &AppRecorder::progressed, this,
             [this](double seconds) { recordingLabel_->setText(tr("● REC %1 s").arg(seconds, 0, 'f', 1)); });
-    connect(recorder_, &AppRecorder::finished, this,
-            [this](const QString& sentence) { statusBar()->showMessage(sentence, 10000); });
+    // Frames still queued at Stop: their encoding shows its progress and can be cancelled (the clip then
+    // ends with the frames encoded, still a playable file).
+    connect(recorder_, &AppRecorder::draining, this, [this](long long left, long long all) {
+        auto* progress = findChild<QProgressDialog*>("recordDrainProgress");
+        if (!progress) {
+            progress = new QProgressDialog(tr("Encoding the last frames of the clip…"), tr("Cancel"), 0,
+                                           static_cast<int>(all), this);
+            progress->setObjectName("recordDrainProgress");
+            progress->setWindowTitle(tr("Record clip"));
+            progress->setMinimumDuration(0);
+            progress->setAutoClose(false);
+            progress->setAutoReset(false);
+            connect(progress, &QProgressDialog::canceled, recorder_, &AppRecorder::cancelDraining);
+            progress->show();
+        }
+        progress->setValue(static_cast<int>(all - left));
+    });
+    connect(recorder_, &AppRecorder::finished, this, [this](const QString& sentence) {
+        if (auto* progress = findChild<QProgressDialog*>("recordDrainProgress")) {
+            progress->disconnect(recorder_); // closing it is no cancel
+            progress->setObjectName(QString());
+            progress->deleteLater();
+        }
+        recordAction_->setEnabled(true);
+        statusBar()->showMessage(sentence, 10000);
+    });
 }
 
 } // namespace pl::ui

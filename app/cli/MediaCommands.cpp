@@ -21,6 +21,8 @@
 #include "report/LabReport.h"
 
 #include <QApplication>
+#include <QDir>
+#include <QFileInfo>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -142,6 +144,25 @@ template <class Options> int buildForOutput(const Options& options, std::unique_
     return prepareOrRefuse(options.preset, options.sets, options.seed, options.backend, built);
 }
 
+// --data: a folder, made here if missing, before anything runs. A file of that name is refused (exit 2),
+// a folder that cannot be made or written is kCannotWrite. Returns 0 when the folder is ready (or none
+// was asked for).
+int dataFolderRefusal(const std::string& dataDir) {
+    if (dataDir.empty()) return kOk;
+    const QString path = QString::fromStdString(dataDir);
+    const QFileInfo info(path);
+    if (info.exists() && !info.isDir()) {
+        std::cerr << "particlelab-cli: --data '" << dataDir
+                  << "' is a file; name a folder for the plots' CSV files\n";
+        return kBadInput;
+    }
+    if (!QDir().mkpath(path) || !QFileInfo(path).isWritable()) {
+        std::cerr << "particlelab-cli: cannot write the plots' CSV files into --data '" << dataDir << "'\n";
+        return kCannotWrite;
+    }
+    return kOk;
+}
+
 } // namespace
 
 int recordClip(const RecordOptions& options) {
@@ -260,6 +281,8 @@ int writeReport(const ReportOptions& options) {
     std::unique_ptr<Model> built;
     const auto setUpStart = Clock::now();
     if (const int refused = buildForOutput(options, built)) return refused;
+    if (const int refused = dataFolderRefusal(options.dataDir))
+        return refused; // made once the experiment builds
     const double setUpSeconds = secondsSince(setUpStart);
     const long long planned = built->plannedSteps();
     const long long steps = options.steps.value_or(planned > 0 ? planned : kReportDefaultSteps);
@@ -277,9 +300,9 @@ int writeReport(const ReportOptions& options) {
         if (!stepper.step()) break; // undone half way by a signal: the report ends at the last whole step
         if (s % every == 0 || s == steps) controller.sample();
     }
-    const QString problem = ui::exportLabReport(controller, QString::fromStdString(described.name),
-                                                QString::fromStdString(described.description),
-                                                QString::fromStdString(options.out));
+    const QString problem = ui::exportLabReport(
+        controller, QString::fromStdString(described.name), QString::fromStdString(described.description),
+        QString::fromStdString(options.out), QString::fromStdString(options.dataDir));
     if (!problem.isEmpty()) {
         std::cerr << "particlelab-cli: " << problem.toStdString() << "\n";
         return kCannotWrite;

@@ -34,6 +34,7 @@ struct ReportOptions {
     std::vector<std::string> sets;
     std::optional<std::uint64_t> seed;
     std::string out;                // .pdf or .html
+    std::string dataDir;            // a folder for the plots' CSV files (made if missing); empty: none
     std::optional<long long> steps; // default: the preset's run length, else 1000
     int threads = 0;
     std::string backend = "auto";

@@ -232,6 +232,9 @@ int main(int argc, char** argv) {
     reportCmd->add_option("preset", report.preset, "Built-in preset name, preset file or snapshot")
         ->required();
     reportCmd->add_option("--out", report.out, "The report: .pdf or .html")->required()->check(fileName());
+    reportCmd->add_option(
+        "--data", report.dataDir,
+        "A folder for the plots' data beside the report, one CSV per plot (made if missing)");
     reportCmd
         ->add_option("--steps", report.steps,
                      "Steps to run first (default: the preset's run length, else 1000)")

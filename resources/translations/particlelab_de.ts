@@ -1539,6 +1539,18 @@ Wirkt nach „Zurücksetzen“.</translation>
         <source>The clip ended early (%1); saved %2</source>
         <translation>Der Clip endete vorzeitig (%1); gespeichert: %2</translation>
     </message>
+    <message>
+        <source>The previous clip is still being finished.</source>
+        <translation>Der vorige Clip wird noch fertiggestellt.</translation>
+    </message>
+    <message>
+        <source>The scene has no plot &apos;%1&apos;.</source>
+        <translation>Die Szene hat kein Diagramm „%1“.</translation>
+    </message>
+    <message>
+        <source>Encoding cancelled; saved the frames encoded, %1</source>
+        <translation>Kodieren abgebrochen; die kodierten Bilder sind gespeichert, %1</translation>
+    </message>
 </context>
 <context>
     <name>pl::ui::Autosave</name>
@@ -2711,6 +2723,10 @@ Wirkt nach „Zurücksetzen“.</translation>
         <source>Gravity, heat and view</source>
         <translation>Schwerkraft, Heizen und Ansicht</translation>
     </message>
+    <message>
+        <source>Encoding the last frames of the clip…</source>
+        <translation>Die letzten Bilder des Clips werden kodiert…</translation>
+    </message>
 </context>
 <context>
     <name>pl::ui::MethodsLab</name>
@@ -2898,6 +2914,101 @@ Wirkt nach „Zurücksetzen“.</translation>
     <message>
         <source>s per unit time</source>
         <translation>s pro Zeiteinheit</translation>
+    </message>
+</context>
+<context>
+    <name>pl::ui::RecordDialog</name>
+    <message>
+        <source>Record clip</source>
+        <translation>Clip aufnehmen</translation>
+    </message>
+    <message>
+        <source>MP4 (H.264): plays everywhere</source>
+        <translation>MP4 (H.264): läuft überall</translation>
+    </message>
+    <message>
+        <source>WebM (VP9): smaller, for the web</source>
+        <translation>WebM (VP9): kleiner, fürs Web</translation>
+    </message>
+    <message>
+        <source>GIF: loops, for slides and chat</source>
+        <translation>GIF: in Schleife, für Folien und Chats</translation>
+    </message>
+    <message>
+        <source>The file&apos;s suffix decides in the end: a name ending in .webm is WebM</source>
+        <translation>Am Ende entscheidet die Endung der Datei: ein Name auf .webm ergibt WebM</translation>
+    </message>
+    <message>
+        <source>The scene alone</source>
+        <translation>Nur die Szene</translation>
+    </message>
+    <message>
+        <source>The scene beside %1</source>
+        <translation>Die Szene neben %1</translation>
+    </message>
+    <message>
+        <source>%1 × %2 (square)</source>
+        <translation>%1 × %2 (quadratisch)</translation>
+    </message>
+    <message>
+        <source>Custom size</source>
+        <translation>Eigene Größe</translation>
+    </message>
+    <message>
+        <source> px</source>
+        <translation> px</translation>
+    </message>
+    <message>
+        <source> frames/s</source>
+        <translation> Bilder/s</translation>
+    </message>
+    <message>
+        <source>Every frame is the state after this many steps, so the clip shows simulated time evenly however long each step took</source>
+        <translation>Jedes Bild ist der Zustand nach so vielen Schritten; so zeigt der Clip die simulierte Zeit gleichmäßig, wie lange jeder Schritt auch dauerte</translation>
+    </message>
+    <message>
+        <source>Watchable pace</source>
+        <translation>Tempo der Szene</translation>
+    </message>
+    <message>
+        <source>The steps per frame that play the scene at the pace it is best watched at</source>
+        <translation>Die Schritte pro Bild, mit denen die Szene in dem Tempo läuft, in dem man ihr am besten folgen kann</translation>
+    </message>
+    <message>
+        <source>Title at the start and the time in the corner</source>
+        <translation>Titel am Anfang und Zeit in der Ecke</translation>
+    </message>
+    <message>
+        <source>Record…</source>
+        <translation>Aufnehmen…</translation>
+    </message>
+    <message>
+        <source>Format:</source>
+        <translation>Format:</translation>
+    </message>
+    <message>
+        <source>Shows:</source>
+        <translation>Zeigt:</translation>
+    </message>
+    <message>
+        <source>Size:</source>
+        <translation>Größe:</translation>
+    </message>
+    <message>
+        <source>Frame rate:</source>
+        <translation>Bildrate:</translation>
+    </message>
+    <message>
+        <source>Steps per frame:</source>
+        <translation>Schritte pro Bild:</translation>
+    </message>
+    <message>
+        <source>%1 %2 of simulated time per frame, %3 %2 per second of clip</source>
+        <translation>%1 %2 simulierte Zeit pro Bild, %3 %2 pro Sekunde Clip</translation>
+    </message>
+    <message>
+        <source>%1 cannot store an odd side (its colours are kept at half resolution): use an even width and height.</source>
+        <translation>%1 kann keine ungerade Seitenlänge speichern (die Farben werden mit halber Auflösung gespeichert): bitte eine gerade Breite und Höhe wählen.</translation>
     </message>
 </context>
 <context>

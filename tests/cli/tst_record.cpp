@@ -21,6 +21,7 @@ extern "C" {
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QSignalSpy>
 #include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QtTest>
@@ -257,9 +258,15 @@ private slots:
         QVERIFY(recorder.start(out, "gas-classroom").isEmpty());
         QVERIFY(recorder.isRecording());
         for (int frame = 0; frame < 130; ++frame) controller.advanceFrame(); // 390 steps
+        QSignalSpy finished(&recorder, &pl::ui::AppRecorder::finished);
         recorder.stop();
         QVERIFY(!recorder.isRecording());
+        QVERIFY(finished.count() == 1 ||
+                finished.wait(30000)); // the last frames encode off the window's thread
+        QVERIFY2(finished.front().front().toString().startsWith("Clip saved"),
+                 qPrintable(finished.front().front().toString()));
         QCOMPARE(recorder.frames(), 40LL); // after 0, 10, …, 390 steps
+        QCOMPARE(recorder.framesInLastClip(), 40LL);
         const Probe p = ffprobe(out);
         QCOMPARE(p.codec, QString("h264"));
         QCOMPARE(p.frames, 40LL);
@@ -275,6 +282,80 @@ private slots:
         const double db = psnr(expected, decodeFrame(out, kFrame));
         qInfo("app frame %d: PSNR %.1f dB", kFrame, db);
         QVERIFY2(db >= 35.0, qPrintable(QString::number(db)));
+    }
+
+    // The Record dialog's choices reach the clip: size, frame rate, steps per frame, the plot beside the
+    // scene (its share of the width) and the captions switched off.
+    void appRecordingFollowsTheChosenOptions() {
+        QTemporaryDir dir;
+        const QString out = dir.filePath("options.webm");
+        pl::ui::SimulationController controller;
+        controller.setBackend(pl::gl::Backend::Cpu);
+        QVERIFY(controller.load(pl::loadPreset("gas-classroom")).isEmpty());
+        controller.setStepsPerFrame(2);
+        pl::ui::AppRecorder recorder(&controller);
+        pl::ui::AppClipOptions options;
+        options.size = QSize(640, 360);
+        options.fps = 12;
+        options.stepsPerFrame = 7;
+        options.captions = false;
+        options.plot = "energyPlot";
+        QVERIFY(recorder.start(out, "gas-classroom", options).isEmpty());
+        for (int frame = 0; frame < 35; ++frame)
+            controller.advanceFrame(); // 70 steps: frames after 0, 7, …, 70
+        QSignalSpy finished(&recorder, &pl::ui::AppRecorder::finished);
+        recorder.stop();
+        QVERIFY(finished.count() == 1 || finished.wait(30000));
+        QCOMPARE(recorder.frames(), 11LL);
+        const Probe p = ffprobe(out);
+        QCOMPARE(p.codec, QString("vp9"));
+        QCOMPARE(p.frames, 11LL);
+        QCOMPARE(QSize(p.width, p.height), options.size);
+        QVERIFY2(std::abs(p.duration - 11.0 / 12) < 0.1, qPrintable(QString::number(p.duration)));
+        // The scene's part of the last frame is the bare scene after 70 steps; the plot fills the rest.
+        const QImage decoded = decodeFrame(out, 10);
+        const int sceneWidth = 640 - static_cast<int>(std::lround(pl::ui::kClipPlotShare * 640));
+        const auto model = stateAfter("gas-classroom", 70);
+        const QImage scene = pl::ui::renderScene(model->sceneView(), QSize(sceneWidth, 360));
+        const double db = psnr(scene, decoded.copy(0, 0, sceneWidth, 360));
+        qInfo("scene beside the plot: PSNR %.1f dB", db);
+        QVERIFY2(db >= 30.0, qPrintable(QString::number(db)));
+        QVERIFY(psnr(scene, decoded.copy(640 - sceneWidth, 0, sceneWidth, 360)) < db - 3.0);
+    }
+
+    // Stop with frames still waiting for a slow encoder: they drain in the background (draining() counts
+    // them down) and Cancel drops the rest; the clip is finished and plays the frames encoded.
+    void cancellingTheDrainKeepsAPlayableClip() {
+        QTemporaryDir dir;
+        const QString out = dir.filePath("drain.webm");
+        pl::ui::SimulationController controller;
+        controller.setBackend(pl::gl::Backend::Cpu);
+        QVERIFY(controller.load(pl::loadPreset("gas-classroom")).isEmpty());
+        controller.setStepsPerFrame(1);
+        pl::ui::AppRecorder recorder(&controller);
+        pl::ui::AppClipOptions options;
+        options.size = QSize(3840, 2160); // VP9 at 4K: far slower than taking a frame
+        options.stepsPerFrame = 1;
+        QVERIFY(recorder.start(out, "gas-classroom", options).isEmpty());
+        for (int frame = 0; frame < 60; ++frame) controller.advanceFrame();
+        QCOMPARE(recorder.frames(), 61LL); // the state at the start, then one a step
+        QSignalSpy draining(&recorder, &pl::ui::AppRecorder::draining);
+        QSignalSpy finished(&recorder, &pl::ui::AppRecorder::finished);
+        recorder.stop();
+        QVERIFY(recorder.isDraining());
+        QCOMPARE(draining.count(), 1);
+        const long long queued = draining.front().at(1).toLongLong();
+        QVERIFY2(queued > 10, qPrintable(QString::number(queued)));
+        QCOMPARE(recorder.start(dir.filePath("next.mp4"), "x"),
+                 QString("The previous clip is still being finished."));
+        recorder.cancelDraining();
+        QVERIFY(finished.count() == 1 || finished.wait(60000));
+        const QString sentence = finished.front().front().toString();
+        QVERIFY2(sentence.startsWith("Encoding cancelled"), qPrintable(sentence));
+        QVERIFY(!recorder.isDraining());
+        const long long encoded = recorder.framesInLastClip();
+        QVERIFY2(encoded > 0 && encoded < 61, qPrintable(QString::number(encoded)));
+        QCOMPARE(ffprobe(out).frames, encoded);
     }
 
     void gifLoopsForEver() {

@@ -1,11 +1,13 @@
 // particlelab-cli report: the PDF's text (pdftotext) holds the experiment's parameters, what was run and
-// the readouts with their theory; page 1 renders (pdftoppm, kept for a look); the HTML page is
-// well-formed XML with its pictures inline; a wrong suffix is refused before anything runs.
+// the readouts with their theory (every kind's); page 1 renders (pdftoppm, kept for a look); the HTML page
+// is well-formed XML with its pictures inline; --data writes the plots' CSV files; a wrong suffix or a
+// data folder that is a file is refused before anything runs.
 #include "CliRunner.h"
 
 #include <QDir>
 #include <QFile>
 #include <QImage>
+#include <QRegularExpression>
 #include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QXmlStreamReader>
@@ -34,7 +36,8 @@ private slots:
         for (const char* expected :
              {"Lab report: gas-classroom", "What was run", "Seed", "Steps", "300", "Simulated time",
               "Integrator", "Backend", "CPU (OpenMP)", "Machine", "Parameters", "count_a", "2500",
-              "Readouts at the end", "KS distance to Maxwell", "1 % critical value", "Energy"})
+              "Readouts against theory", "Readouts at the end", "KS distance to Maxwell",
+              "1 % critical value", "Energy"})
             QVERIFY2(text.out.contains(QString::fromUtf8(expected)), expected);
         // Page 1 as an image, kept beside the other screenshots for a look.
         if (QStandardPaths::findExecutable("pdftoppm").isEmpty()) return;
@@ -72,6 +75,100 @@ private slots:
         QVERIFY(svgs >= 1);     // every plot of the gas, as vector graphics
         QVERIFY(images > svgs); // and the scene
         QVERIFY(bytes.contains("count_a") && bytes.contains("1 % critical value"));
+    }
+
+    // Each kind's key readouts beside their theory, in the PDF's text: the gas's speeds against
+    // Maxwell–Boltzmann, the DSMC cell's moments against BKW, the tunnel's drag against the
+    // free-molecular value, the fluid's density error against the methods lab's tolerance.
+    void readoutsStandBesideTheirTheory_data() {
+        QTest::addColumn<QStringList>("run");
+        QTest::addColumn<QStringList>("expected");
+        QTest::newRow("gas") << QStringList{"gas-classroom", "--steps", "300"}
+                             << QStringList{"Readouts against theory",
+                                            "KS distance of the speeds",
+                                            "1.63/√n",
+                                            "n = 2500 disks",
+                                            "Maxwell–Boltzmann fit of the speeds",
+                                            "maximum-likelihood fit",
+                                            "of its area"};
+        QTest::newRow("dsmc") << QStringList{"dsmc-bkw", "--steps", "100"}
+                              << QStringList{"Moment M4 / M4(eq) against BKW", "exact (BKW)", "Moment M8",
+                                             "Kurtosis of v_x", "a Maxwellian's is 3"};
+        QTest::newRow("tunnel") << QStringList{"tunnel-free-molecular-cylinder", "--steps", "700"}
+                                << QStringList{"Drag of the body, averaged over the fields window",
+                                               "free-molecular value for a diffuse half cylinder",
+                                               "free-molecular flow, where the drag tends to this value"};
+        QTest::newRow("fluid") << QStringList{"fluid-dam-break", "--steps", "150"}
+                               << QStringList{"Mean density error", "the methods lab's tolerance 1 %",
+                                              "Largest compression", "Surge front",
+                                              "Ritter's shallow-water bound"};
+    }
+    void readoutsStandBesideTheirTheory() {
+        QFETCH(QStringList, run);
+        QFETCH(QStringList, expected);
+        QTemporaryDir dir;
+        // The HTML page holds each cell's text whole (the PDF's table wraps and hyphenates it).
+        const QString html = dir.filePath("r.html");
+        const auto r =
+            runCli(QStringList{"report"} + run + QStringList{"--backend", "cpu", "--out", html}, 300000);
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        QFile file(html);
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        const QString page = QString::fromUtf8(file.readAll());
+        QVERIFY(page.contains("<h2>Readouts against theory</h2>"));
+        for (const QString& line : expected) QVERIFY2(page.contains(line.toHtmlEscaped()), qPrintable(line));
+    }
+
+    // The free-molecular cylinder's measured drag lies near the theory: the ratio the report prints.
+    void freeMolecularDragRatioIsNearOne() {
+        QTemporaryDir dir;
+        const QString html = dir.filePath("r.html");
+        const auto r = runCli(
+            {"report", "tunnel-free-molecular-cylinder", "--steps", "900", "--backend", "cpu", "--out", html},
+            300000);
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        QFile file(html);
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        const QString page = QString::fromUtf8(file.readAll());
+        const auto match = QRegularExpression("\\(ratio ([0-9.]+)\\)").match(page);
+        QVERIFY2(match.hasMatch(), "no drag ratio in the report");
+        const double ratio = match.captured(1).toDouble();
+        qInfo("drag / free-molecular drag: %.3f", ratio);
+        QVERIFY2(ratio > 0.85 && ratio < 1.15, qPrintable(match.captured(1)));
+    }
+
+    // --data writes one CSV per plot of the scene beside the report; a file in its place is refused.
+    void dataFolderHoldsEveryPlotsCsv() {
+        QTemporaryDir dir;
+        const QString data = dir.filePath("data/of/run");
+        const auto r = runCli(kReport + QStringList{"--out", dir.filePath("r.pdf"), "--data", data});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        const QStringList files = QDir(data).entryList({"*.csv"});
+        QVERIFY2(files.contains("energyPlot.csv"), qPrintable(files.join(' ')));
+        QVERIFY(files.size() >= 2); // every plot of the gas
+        for (const QString& name : files) {
+            QFile csv(QDir(data).filePath(name));
+            QVERIFY(csv.open(QIODevice::ReadOnly));
+            const QList<QByteArray> lines = csv.readAll().split('\n');
+            QCOMPARE(lines.front(), QByteArray("series,x,y"));
+            QVERIFY2(lines.size() > 100, qPrintable(name)); // the run's samples, not an empty table
+        }
+    }
+
+    void aDataFolderThatIsAFileIsRefused() {
+        QTemporaryDir dir;
+        const QString file = dir.filePath("taken");
+        QFile taken(file);
+        QVERIFY(taken.open(QIODevice::WriteOnly));
+        taken.write("mine");
+        taken.close();
+        const auto r = runCli(kReport + QStringList{"--out", dir.filePath("r.pdf"), "--data", file});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains("is a file"), qPrintable(r.err));
+        QCOMPARE(r.err.count('\n'), 1);
+        QVERIFY(!QFileInfo::exists(dir.filePath("r.pdf")));
+        QVERIFY(taken.open(QIODevice::ReadOnly));
+        QCOMPARE(taken.readAll(), QByteArray("mine"));
     }
 
     void aWrongSuffixIsRefusedBeforeTheRun() {

@@ -1,23 +1,41 @@
 // Recording in the app: Record starts a clip of the running scene, Stop finishes it. A frame is taken
-// after every kAppStepsPerClipFrame steps inside the controller's stepping (SimulationController::
-// watchSteps), never per shown frame, so the clip shows simulated time evenly whatever the frame rate;
-// the frame is drawn and encoded on the clip's worker thread (ClipWriter) while the scene stays live.
+// after every `stepsPerFrame` steps inside the controller's stepping (SimulationController::watchSteps),
+// never per shown frame, so the clip shows simulated time evenly whatever the frame rate; the frame is
+// drawn and encoded on the clip's worker thread (ClipWriter) while the scene stays live. Frames the
+// encoder has not caught up with wait in a queue of a few seconds; Stop encodes them in the background
+// (draining) and Cancel drops them, finishing the clip with what was encoded.
 #pragma once
 
 #include "ClipFrames.h"
 
 #include <QObject>
 #include <QString>
+#include <QTimer>
 #include <memory>
+#include <thread>
 
 namespace pl::ui {
 
 class ClipWriter;
+class SeriesPlot;
 class SimulationController;
 
-inline constexpr int kAppStepsPerClipFrame = 10; // as the CLI's --steps-per-frame: the app's pace
+inline constexpr int kAppStepsPerClipFrame = 10; // as the CLI's --steps-per-frame
 inline constexpr int kAppClipFps = 30;
 inline constexpr QSize kAppClipSize{1280, 720};
+// The most the queue of frames waiting for the encoder may hold, in seconds of clip and in bytes: a
+// burst of slow encoding never stalls the scene, and a huge scene never fills the memory.
+inline constexpr int kAppQueueSeconds = 4;
+inline constexpr double kAppQueueBytes = 512.0 * 1024 * 1024;
+
+// What the Record dialog chose (RecordDialog.h); the defaults are the CLI's.
+struct AppClipOptions {
+    QSize size = kAppClipSize;                 // [px]
+    int fps = kAppClipFps;                     // [frames/s]
+    int stepsPerFrame = kAppStepsPerClipFrame; // model steps between two frames
+    bool captions = true;                      // the title and the time readout
+    QString plot; // a plot's object name ("energyPlot") beside the scene; empty: none
+};
 
 class AppRecorder : public QObject {
     Q_OBJECT
@@ -26,27 +44,46 @@ public:
     ~AppRecorder() override;
 
     // Starts a clip at path (format by its suffix) titled `title`. Returns why it cannot, or empty.
-    QString start(const QString& path, const QString& title);
-    // Finishes the clip (its queued frames are encoded first, at most a few).
+    QString start(const QString& path, const QString& title, const AppClipOptions& options = {});
+    // Stops taking frames. The frames still queued are encoded in the background (draining(), then
+    // finished()); with none queued the clip is finished at once.
     void stop();
-    bool isRecording() const { return writer_ != nullptr; }
-    long long frames() const { return frames_; }
-    double seconds() const { return static_cast<double>(frames_) / kAppClipFps; } // clip length so far
+    // Drops the frames still queued: the clip ends with those encoded (a playable file).
+    void cancelDraining();
+    // Stops and waits until the clip is finished (closing the window, a new experiment).
+    void finishNow();
+    bool isRecording() const { return writer_ != nullptr && !draining_; }
+    bool isDraining() const { return draining_; }
+    long long frames() const { return frames_; }            // taken
+    long long framesInLastClip() const { return encoded_; } // in the file, once finished() was sent
+    double seconds() const { return static_cast<double>(frames_) / options_.fps; } // clip length so far
+    const AppClipOptions& options() const { return options_; }
 
 signals:
     void recordingChanged(bool recording);
-    void progressed(double seconds);        // after each frame taken
-    void finished(const QString& sentence); // what was written, or why the clip ended early
+    void progressed(double seconds);              // after each frame taken
+    void draining(long long left, long long all); // frames still to encode after Stop, of those queued then
+    void finished(const QString& sentence);       // what was written, or why the clip ended early
 
 private:
     void capture();
     void end(const QString& problem);
+    void drained();
+    std::size_t queueLimit() const;
 
     SimulationController* controller_;
     std::unique_ptr<ClipWriter> writer_;
+    std::unique_ptr<SeriesPlot> plot_; // hidden: the docks stay as they are
     ClipLook look_;
+    AppClipOptions options_;
     QString path_;
+    QString problem_; // why the clip ends early, kept while it drains
     long long frames_ = 0;
+    long long queuedAtStop_ = 0;
+    long long encoded_ = 0;
+    bool draining_ = false;
+    QTimer drainPoll_;
+    std::thread finisher_; // finishes the container off the window's thread
 };
 
 } // namespace pl::ui

@@ -36,19 +36,26 @@ void paintCaption(QPainter& painter, const QRect& area, const QString& text, dou
 }
 } // namespace
 
+QImage plotPicture(QCustomPlot* plot, QSize frameSize) {
+    const int plotWidth = static_cast<int>(std::lround(kClipPlotShare * frameSize.width()));
+    QImage picture(plotWidth, frameSize.height(), QImage::Format_RGB32);
+    picture.fill(Qt::white);
+    {
+        QCPPainter plotPainter(&picture); // ended before the picture is handed on
+        plot->toPainter(&plotPainter, plotWidth, frameSize.height());
+    }
+    return picture;
+}
+
 QImage clipFrame(const ClipLook& look, const SceneView& scene, double time, long long index) {
     QImage image(look.size, QImage::Format_RGB32);
     image.fill(Qt::white);
     QRect sceneArea(QPoint(0, 0), look.size);
-    if (look.plot) {
-        const int plotWidth = static_cast<int>(std::lround(kClipPlotShare * look.size.width()));
-        sceneArea.setWidth(look.size.width() - plotWidth);
-        QImage plotImage(plotWidth, look.size.height(), QImage::Format_RGB32);
-        plotImage.fill(Qt::white);
-        {
-            QCPPainter plotPainter(&plotImage);
-            look.plot->toPainter(&plotPainter, plotWidth, look.size.height());
-        }
+    const QImage plotImage = !look.plotImage.isNull() ? look.plotImage
+                             : look.plot              ? plotPicture(look.plot, look.size)
+                                                      : QImage();
+    if (!plotImage.isNull()) {
+        sceneArea.setWidth(look.size.width() - plotImage.width());
         QPainter painter(&image);
         painter.drawImage(sceneArea.width(), 0, plotImage);
     }

@@ -22,10 +22,15 @@ struct ClipLook {
     QString title;               // the preset's name
     QString timeUnit;            // the kind's unit of time ("T", "s")
     QCustomPlot* plot = nullptr; // drawn beside the scene when set
+    QImage plotImage;            // or a plot drawn already (plotPicture), which any thread may compose
 };
 
 // The share of a frame's width the plot takes beside the scene.
 inline constexpr double kClipPlotShare = 0.42;
+
+// The plot as it is now, at the size it takes beside the scene in a frame of frameSize. Call it on the
+// plot's thread: the app draws it there and hands the picture to the clip's worker.
+QImage plotPicture(QCustomPlot* plot, QSize frameSize);
 
 // Frame `index` of the clip (0 is the first), showing `scene` at simulated time `time` [the kind's unit].
 QImage clipFrame(const ClipLook& look, const SceneView& scene, double time, long long index);

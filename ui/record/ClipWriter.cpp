@@ -1,11 +1,14 @@
 // ClipWriter: one worker per clip; the queue is the only state the two threads share.
 #include "ClipWriter.h"
 
+#include <algorithm>
+
 namespace pl::ui {
 
 ClipWriter::ClipWriter(const std::string& path, int width, int height, int fps,
-                       std::vector<QRgb> paletteHints)
-    : encoder_(path, width, height, fps, std::move(paletteHints)), worker_([this] { run(); }) {}
+                       std::vector<QRgb> paletteHints, std::size_t queueFrames)
+    : encoder_(path, width, height, fps, std::move(paletteHints)),
+      capacity_(std::max<std::size_t>(1, queueFrames)), worker_([this] { run(); }) {}
 
 ClipWriter::~ClipWriter() {
     try {
@@ -52,7 +55,7 @@ void ClipWriter::write(QImage frame) {
 
 void ClipWriter::writeDrawn(std::function<QImage()> draw) {
     std::unique_lock lock(mutex_);
-    changed_.wait(lock, [this] { return queue_.size() < kClipQueueFrames || error_; });
+    changed_.wait(lock, [this] { return queue_.size() < capacity_ || error_; });
     rethrow();
     queue_.push_back(std::move(draw));
     changed_.notify_all();
@@ -63,8 +66,7 @@ void ClipWriter::finish(bool dropQueued) {
         std::lock_guard lock(mutex_);
         if (finished_) return;
         finished_ = true;
-        if (dropQueued && queue_.size() > 1)
-            queue_.erase(queue_.begin() + 1, queue_.end()); // the first is being encoded
+        if (dropQueued) dropWaiting();
         closing_ = true;
         changed_.notify_all();
     }
@@ -76,6 +78,16 @@ void ClipWriter::finish(bool dropQueued) {
     }
     encoder_.finish(); // after a write error it finishes what it can without throwing
     if (error) std::rethrow_exception(error);
+}
+
+void ClipWriter::dropWaiting() {
+    if (queue_.size() > 1) queue_.erase(queue_.begin() + 1, queue_.end()); // the first is being encoded
+}
+
+void ClipWriter::dropQueued() {
+    std::lock_guard lock(mutex_);
+    dropWaiting();
+    changed_.notify_all();
 }
 
 long long ClipWriter::framesWritten() const {

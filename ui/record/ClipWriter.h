@@ -19,8 +19,10 @@ inline constexpr std::size_t kClipQueueFrames = 4;
 
 class ClipWriter {
 public:
-    // Opens the clip at once (so an unwritable file or refused size throws VideoError here).
-    ClipWriter(const std::string& path, int width, int height, int fps, std::vector<QRgb> paletteHints = {});
+    // Opens the clip at once (so an unwritable file or refused size throws VideoError here). queueFrames:
+    // how many frames may wait for the encoder before write() waits for room.
+    ClipWriter(const std::string& path, int width, int height, int fps, std::vector<QRgb> paletteHints = {},
+               std::size_t queueFrames = kClipQueueFrames);
     ~ClipWriter(); // finishes the clip
     ClipWriter(const ClipWriter&) = delete;
     ClipWriter& operator=(const ClipWriter&) = delete;
@@ -33,6 +35,9 @@ public:
     // Encodes what is queued (or, with dropQueued, drops it: a cancelled encode), drains the encoder and
     // finishes the container. Throws a VideoError met on the way, once.
     void finish(bool dropQueued = false);
+    // Drops the frames queued and not yet being encoded, from any thread (also while finish() drains
+    // them): a cancelled encode that still ends in a playable clip.
+    void dropQueued();
 
     long long framesWritten() const; // encoded and handed to the file
     long long framesQueued() const;  // handed over and not yet encoded
@@ -41,11 +46,13 @@ public:
 private:
     void run();
     void rethrow();
+    void dropWaiting(); // with the lock held
 
     VideoEncoder encoder_;
     mutable std::mutex mutex_;
     std::condition_variable changed_;
     std::deque<std::function<QImage()>> queue_;
+    std::size_t capacity_;
     bool closing_ = false, finished_ = false;
     long long written_ = 0;
     std::exception_ptr error_;

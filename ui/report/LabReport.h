@@ -27,10 +27,12 @@ struct LabReportContent {
     QString units;       // the kind's unit system
     std::vector<ReportRow> parameters;
     std::vector<ReportRow> run;      // seed, steps, simulated time, integrator, backend, machine, date
-    std::vector<ReportRow> readouts; // the last sample of every series column, theory where the model has it
+    std::vector<ReportRow> theory;   // key readouts beside their theory, with a verdict (ReportTheory.h)
+    std::vector<ReportRow> readouts; // the last sample of every series column
     QStringList distributions;       // the histograms' one-line summaries ("kT = 0.501, KS distance 0.012")
     QImage scene;                    // the viewport, drawn off screen
     struct Plot {
+        QString name; // the plot's object name ("energyPlot"): its data file's name
         QString title;
         QCustomPlot* plot; // drawn as vector graphics by the writers
     };
@@ -49,10 +51,11 @@ LabReportContent gatherLabReport(SimulationController& controller, const QString
 QString writeLabReport(const LabReportContent& content, const QString& path);
 
 // The report of the controller's experiment now, with every plot of its kind made afresh from the series
-// store (hidden widgets: the app's docks stay as they are, and the CLI needs none). Returns an error
+// store (hidden widgets: the app's docks stay as they are, and the CLI needs none). With a dataDir (an
+// existing folder), every plot's data is written there too, as <plot name>.csv. Returns an error
 // sentence, or empty.
 QString exportLabReport(SimulationController& controller, const QString& name, const QString& description,
-                        const QString& path);
+                        const QString& path, const QString& dataDir = {});
 
 // Whether a path's suffix names a report format.
 bool isReportPath(const QString& path);

@@ -1,14 +1,15 @@
 // LabReportContent: the report's facts, read from the controller's model, its registration and series.
 // The report is written in English whatever the interface language (a document to hand in, one wording
 // for every reader); the core's labels are translated where a translator is installed. Theory comes only from
-// what the core computes: the KS distance of each species' speeds against the Maxwell–Boltzmann distribution,
-// compared with the core's 1 % critical value for that many disks.
+// what the core computes (ReportTheory.cpp).
 #include "LabReport.h"
+
+#include "ReportTheory.h"
 
 #include "SimulationController.h"
 #include "catalog/ModelCatalog.h"
-#include "common/Statistics.h"
 #include "i18n/Translations.h"
+#include "plots/PlotExport.h"
 #include "plots/SeriesPlot.h"
 #include "plots/SeriesPlotSpecs.h"
 #include "viewport/ScenePainter.h"
@@ -16,6 +17,7 @@
 #include <qcustomplot.h> // before the use of SeriesPlot, which names QCPAxis
 
 #include <QDateTime>
+#include <QDir>
 #include <QFile>
 #include <QSysInfo>
 #include <cmath>
@@ -50,23 +52,6 @@ QString machineText() {
         .arg(QSysInfo::prettyProductName(), cpuName())
         .arg(std::thread::hardware_concurrency())
         .arg(QString::fromLatin1(qVersion()));
-}
-
-// The disks of a species that its KS distance was measured on: all of them in a one-species scene,
-// else the preset's count of that species.
-double ksSampleSize(const std::string& species, const TimeSeries& table, const std::vector<double>& last,
-                    const ParamValues& params) {
-    const auto column = [&](const std::string& name) -> double {
-        const auto& columns = table.columns();
-        const auto it = std::find(columns.begin(), columns.end(), name);
-        return it == columns.end() ? NAN : last[static_cast<std::size_t>(it - columns.begin())];
-    };
-    const bool oneSpecies = std::isnan(column(species == "a" ? "ks_b" : "ks_a"));
-    if (oneSpecies) return column("particles");
-    const auto count = params.find("count_" + species);
-    return count != params.end() && std::holds_alternative<double>(count->second)
-               ? std::get<double>(count->second)
-               : NAN;
 }
 
 } // namespace
@@ -124,21 +109,10 @@ LabReportContent gatherLabReport(SimulationController& controller, const QString
                     row.name = coreText(column.label);
                     row.unit = QString::fromStdString(column.unit);
                 }
-            if (name.rfind("ks_", 0) == 0) {
-                const double n = ksSampleSize(name.substr(3), table, last, params);
-                if (n >= 2) {
-                    const double critical = ksCritical(n, 0.01);
-                    row.note =
-                        QStringLiteral("1 % critical value %1 for %2 disks: %3")
-                            .arg(QString::number(critical, 'g', 3))
-                            .arg(n)
-                            .arg(last[i] <= critical ? QStringLiteral("consistent with Maxwell–Boltzmann")
-                                                     : QStringLiteral("not (yet) Maxwell–Boltzmann"));
-                }
-            }
             c.readouts.push_back(row);
         }
     }
+    c.theory = theoryReadouts(*model, table);
     for (const NamedHistogram& histogram : model->histograms())
         if (!histogram.summary.empty())
             c.distributions << QStringLiteral("%1: %2").arg(coreText(histogram.label),
@@ -149,7 +123,7 @@ LabReportContent gatherLabReport(SimulationController& controller, const QString
 }
 
 QString exportLabReport(SimulationController& controller, const QString& name, const QString& description,
-                        const QString& path) {
+                        const QString& path, const QString& dataDir) {
     const Model* model = controller.model();
     if (!model) return QStringLiteral("There is no experiment to report on.");
     const QString kind = QString::fromStdString(model->kind());
@@ -162,10 +136,18 @@ QString exportLabReport(SimulationController& controller, const QString& name, c
         plot->resize(kPlotWidgetSize);
         plot->show();
         plot->refresh();
-        plots.push_back({spec.title, plot->plot()});
+        plots.push_back({spec.objectName, spec.title, plot->plot()});
         widgets.push_back(std::move(plot));
     }
-    return writeLabReport(gatherLabReport(controller, name, description, plots), path);
+    if (const QString problem = writeLabReport(gatherLabReport(controller, name, description, plots), path);
+        !problem.isEmpty())
+        return problem;
+    if (!dataDir.isEmpty())
+        for (const LabReportContent::Plot& plot : plots)
+            if (const QString problem = savePlotCsv(plot.plot, QDir(dataDir).filePath(plot.name + ".csv"));
+                !problem.isEmpty())
+                return problem;
+    return {};
 }
 
 } // namespace pl::ui

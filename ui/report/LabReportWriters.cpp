@@ -29,11 +29,12 @@ public:
         width_ = writer.width();
         height_ = writer.height();
     }
-    void heading(const QString& text, double pointSize) {
+    // keep: the height of what follows that must share the heading's page (a plot), else kKeepWithHeading.
+    void heading(const QString& text, double pointSize, int keep = kKeepWithHeading) {
         QFont font = p_.font();
         font.setPointSizeF(pointSize);
         font.setBold(true);
-        room(kKeepWithHeading); // a heading never ends a page alone
+        room(keep); // a heading never ends a page alone
         paragraph(text, font);
     }
     void paragraph(const QString& text, const QFont& font) {
@@ -122,11 +123,15 @@ QString writePdf(const LabReportContent& c, const QString& path) {
         flow.image(c.scene);
         flow.heading(QStringLiteral("What was run"), 13);
         flow.table(c.run, {0.25, 0.75, 0.0, 0.0});
+        if (!c.theory.empty()) {
+            flow.heading(QStringLiteral("Readouts against theory"), 13);
+            flow.table(c.theory, {0.3, 0.12, 0.1, 0.48});
+        }
         flow.heading(QStringLiteral("Readouts at the end"), 13);
-        flow.table(c.readouts, {0.38, 0.14, 0.12, 0.36});
+        flow.table(c.readouts, {0.55, 0.25, 0.2, 0.0});
         for (const QString& line : c.distributions) flow.body(line);
         for (const auto& plot : c.plots) {
-            flow.heading(plot.title, 13);
+            flow.heading(plot.title, 13, kPlotHeight + 2 * kGap + kKeepWithHeading / 4);
             flow.plot(plot.plot);
         }
         flow.heading(QStringLiteral("Parameters"), 13);
@@ -193,9 +198,14 @@ QString writeHtml(const LabReportContent& c, const QString& path) {
                 .arg(escaped(QStringLiteral("The scene at the end")), QString::fromLatin1(png.toBase64()));
     html += QStringLiteral("<h2>%1</h2>\n").arg(escaped(QStringLiteral("What was run")));
     html += tableHtml(c.run, {QStringLiteral("what"), QStringLiteral("value")});
+    if (!c.theory.empty()) {
+        html += QStringLiteral("<h2>%1</h2>\n").arg(escaped(QStringLiteral("Readouts against theory")));
+        html += tableHtml(c.theory, {QStringLiteral("readout"), QStringLiteral("value"),
+                                     QStringLiteral("unit"), QStringLiteral("theory")});
+    }
     html += QStringLiteral("<h2>%1</h2>\n").arg(escaped(QStringLiteral("Readouts at the end")));
-    html += tableHtml(c.readouts, {QStringLiteral("readout"), QStringLiteral("value"), QStringLiteral("unit"),
-                                   QStringLiteral("theory")});
+    html +=
+        tableHtml(c.readouts, {QStringLiteral("readout"), QStringLiteral("value"), QStringLiteral("unit")});
     for (const QString& line : c.distributions) html += QStringLiteral("<p>%1</p>\n").arg(escaped(line));
     for (const auto& plot : c.plots)
         html += QStringLiteral("<h2>%1</h2>\n<p><img alt=\"%1\" src=\"data:image/svg+xml;base64,%2\"/></p>\n")
