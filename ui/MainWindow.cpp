@@ -104,6 +104,10 @@ MainWindow::MainWindow(QWidget* parent)
     viewport_->setFocus(Qt::OtherFocusReason);
 }
 
+MainWindow::~MainWindow() {
+    controller_->disconnect(this);
+}
+
 void MainWindow::createViewport() {
     // The offscreen platform shows no native OpenGL windows (and Qt 6.4 crashes making GL widgets there):
     // draw with QPainter there.

@@ -34,6 +34,9 @@ class MainWindow : public QMainWindow {
     Q_OBJECT
 public:
     explicit MainWindow(QWidget* parent = nullptr);
+    // Stops listening to the controller first: a field losing focus while the window closes still applies
+    // its value, and the window's handlers must not run on a half-destroyed window.
+    ~MainWindow() override;
 
     // Loads a built-in preset by name or a preset file; shows a dialog naming the problem on failure
     // (the running experiment is kept). Returns whether it loaded.

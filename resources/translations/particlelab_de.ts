@@ -2,6 +2,23 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="de_DE">
 <context>
+    <name>FieldOverlay</name>
+    <message numerus="yes">
+        <source>mean of the last %n step(s)</source>
+        <translation>
+            <numerusform>Mittel über den letzten %n Schritt</numerusform>
+            <numerusform>Mittel über die letzten %n Schritte</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>mean of %n step(s)</source>
+        <translation>
+            <numerusform>Mittel über %n Schritt</numerusform>
+            <numerusform>Mittel über %n Schritte</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>QObject</name>
     <message>
         <source>
@@ -76,6 +93,10 @@ Wirkt nach „Zurücksetzen“.</translation>
     <message>
         <source>Export data as CSV…</source>
         <translation>Daten als CSV exportieren…</translation>
+    </message>
+    <message>
+        <source>Cannot start the PNG renderer.</source>
+        <translation>Die PNG-Ausgabe kann nicht gestartet werden.</translation>
     </message>
 </context>
 <context>
@@ -1512,6 +1533,158 @@ Wirkt nach „Zurücksetzen“.</translation>
         <source>µs</source>
         <translation>µs</translation>
     </message>
+    <message>
+        <source>2d</source>
+        <translation>2D</translation>
+    </message>
+    <message>
+        <source>3d</source>
+        <translation>3D</translation>
+    </message>
+    <message>
+        <source>Sampling window</source>
+        <translation>Mittelungsfenster</translation>
+    </message>
+    <message>
+        <source>The fields and mean forces show the most recent steps only (between half and all of this many), so a moving shock shows where it is; 0: every step since sampling started, for a steady flow.</source>
+        <translation>Felder und mittlere Kräfte zeigen nur die jüngsten Schritte (zwischen der Hälfte und allen davon), damit ein laufender Stoß dort erscheint, wo er gerade ist; 0: jeder Schritt seit Beginn der Mittelung, für eine stationäre Strömung.</translation>
+    </message>
+    <message>
+        <source>all-pairs</source>
+        <translation>alle Paare</translation>
+    </message>
+    <message>
+        <source>bkw</source>
+        <translation>BKW</translation>
+    </message>
+    <message>
+        <source>cell-list</source>
+        <translation>Zellliste</translation>
+    </message>
+    <message>
+        <source>density</source>
+        <translation>Dichte</translation>
+    </message>
+    <message>
+        <source>diffuse</source>
+        <translation>diffus</translation>
+    </message>
+    <message>
+        <source>empty</source>
+        <translation>leer</translation>
+    </message>
+    <message>
+        <source>explicit-euler</source>
+        <translation>explizites Euler</translation>
+    </message>
+    <message>
+        <source>fixed-speed</source>
+        <translation>feste Geschwindigkeit</translation>
+    </message>
+    <message>
+        <source>forest-ruth</source>
+        <translation>Forest-Ruth</translation>
+    </message>
+    <message>
+        <source>hard-sphere</source>
+        <translation>harte Kugeln</translation>
+    </message>
+    <message>
+        <source>inflow</source>
+        <translation>Zustrom</translation>
+    </message>
+    <message>
+        <source>inverse-root</source>
+        <translation>σ ∝ 1/√c_r</translation>
+    </message>
+    <message>
+        <source>lattice</source>
+        <translation>Gitter</translation>
+    </message>
+    <message>
+        <source>mach</source>
+        <translation>Mach-Zahl</translation>
+    </message>
+    <message>
+        <source>maxwell</source>
+        <translation>Maxwell-Moleküle</translation>
+    </message>
+    <message>
+        <source>maxwell-boltzmann</source>
+        <translation>Maxwell-Boltzmann</translation>
+    </message>
+    <message>
+        <source>maxwellian</source>
+        <translation>Maxwell-Verteilung</translation>
+    </message>
+    <message>
+        <source>outflow</source>
+        <translation>Abstrom</translation>
+    </message>
+    <message>
+        <source>particles</source>
+        <translation>Teilchen</translation>
+    </message>
+    <message>
+        <source>periodic</source>
+        <translation>periodisch</translation>
+    </message>
+    <message>
+        <source>random</source>
+        <translation>zufällig</translation>
+    </message>
+    <message>
+        <source>reflecting</source>
+        <translation>reflektierend</translation>
+    </message>
+    <message>
+        <source>rest</source>
+        <translation>ruhend</translation>
+    </message>
+    <message>
+        <source>rk4</source>
+        <translation>Runge-Kutta 4</translation>
+    </message>
+    <message>
+        <source>spawn-lattice</source>
+        <translation>aus dem Startgitter</translation>
+    </message>
+    <message>
+        <source>specular</source>
+        <translation>spiegelnd</translation>
+    </message>
+    <message>
+        <source>stream</source>
+        <translation>Anströmung</translation>
+    </message>
+    <message>
+        <source>symplectic-euler</source>
+        <translation>symplektisches Euler</translation>
+    </message>
+    <message>
+        <source>temperature</source>
+        <translation>Temperatur</translation>
+    </message>
+    <message>
+        <source>thermal</source>
+        <translation>thermisch</translation>
+    </message>
+    <message>
+        <source>two-beams</source>
+        <translation>zwei Strahlen</translation>
+    </message>
+    <message>
+        <source>value</source>
+        <translation>Wert</translation>
+    </message>
+    <message>
+        <source>velocity-verlet</source>
+        <translation>Velocity-Verlet</translation>
+    </message>
+    <message>
+        <source>vhs</source>
+        <translation>VHS</translation>
+    </message>
 </context>
 <context>
     <name>pl::ui::AppRecorder</name>
@@ -1641,10 +1814,6 @@ Wirkt nach „Zurücksetzen“.</translation>
         <translation>Mitteln über</translation>
     </message>
     <message>
-        <source> samples</source>
-        <translation> Stichproben</translation>
-    </message>
-    <message>
         <source>Time-averages the bars over the last samples (about 20 per second of running)</source>
         <translation>Mittelt die Balken zeitlich über die letzten Stichproben (etwa 20 pro Sekunde Laufzeit)</translation>
     </message>
@@ -1663,6 +1832,14 @@ Wirkt nach „Zurücksetzen“.</translation>
     <message>
         <source>%1 (theory)</source>
         <translation>%1 (Theorie)</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n sample(s)</source>
+        <comment>a spin box&apos;s value and unit</comment>
+        <translation>
+            <numerusform>%n Stichprobe</numerusform>
+            <numerusform>%n Stichproben</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -1813,10 +1990,6 @@ Wirkt nach „Zurücksetzen“.</translation>
         <translation> DPI</translation>
     </message>
     <message>
-        <source>PNG pixels = size × DPI / 96</source>
-        <translation>PNG-Pixel = Größe × DPI / 96</translation>
-    </message>
-    <message>
         <source>Resolution recorded in the file</source>
         <translation>In der Datei vermerkte Auflösung</translation>
     </message>
@@ -1831,6 +2004,10 @@ Wirkt nach „Zurücksetzen“.</translation>
     <message>
         <source>Resolution</source>
         <translation>Auflösung</translation>
+    </message>
+    <message>
+        <source>The PNG has exactly the pixels above; a higher DPI draws text and lines larger on them</source>
+        <translation>Das PNG hat genau die Pixel oben; mehr DPI zeichnen Text und Linien darauf größer</translation>
     </message>
 </context>
 <context>
@@ -2724,6 +2901,14 @@ Wirkt nach „Zurücksetzen“.</translation>
         <translation>Schwerkraft, Heizen und Ansicht</translation>
     </message>
     <message>
+        <source>&amp;Automatic colour scale</source>
+        <translation>&amp;Automatische Farbskala</translation>
+    </message>
+    <message>
+        <source>The top of the colour scale follows the particles as they heat up; off: the scene&apos;s fixed scale, so heating shows as redder colours</source>
+        <translation>Das obere Ende der Farbskala folgt den Teilchen, wenn sie sich erwärmen; aus: die feste Skala der Szene, Erwärmen zeigt sich in röteren Farben</translation>
+    </message>
+    <message>
         <source>Encoding the last frames of the clip…</source>
         <translation>Die letzten Bilder des Clips werden kodiert…</translation>
     </message>
@@ -3127,6 +3312,10 @@ Wirkt nach „Zurücksetzen“.</translation>
         <source>Warning: %1</source>
         <translation>Warnung: %1</translation>
     </message>
+    <message>
+        <source>Cannot reset: %1</source>
+        <translation>Zurücksetzen nicht möglich: %1</translation>
+    </message>
 </context>
 <context>
     <name>pl::ui::StabilityPage</name>
@@ -3235,6 +3424,10 @@ Wirkt nach „Zurücksetzen“.</translation>
     <message>
         <source>Not sampled yet: sampling starts after the start-up steps</source>
         <translation>Noch nicht abgetastet: die Mittelung beginnt nach den Anlaufschritten</translation>
+    </message>
+    <message>
+        <source>The simulation stopped: its state is no longer physical. Press Reset (Ctrl+R) to start again, with a smaller time step if it happens again.</source>
+        <translation>Die Simulation ist angehalten: ihr Zustand ist nicht mehr physikalisch. „Zurücksetzen“ (Strg+R) startet neu – geschieht es wieder, mit kleinerem Zeitschritt.</translation>
     </message>
 </context>
 </TS>

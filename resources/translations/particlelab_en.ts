@@ -2,6 +2,34 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="en">
 <context>
+    <name>FieldOverlay</name>
+    <message numerus="yes">
+        <source>mean of the last %n step(s)</source>
+        <translation>
+            <numerusform>mean of the last %n step</numerusform>
+            <numerusform>mean of the last %n steps</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>mean of %n step(s)</source>
+        <translation>
+            <numerusform>mean of %n step</numerusform>
+            <numerusform>mean of %n steps</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>pl::ui::DistributionPlot</name>
+    <message numerus="yes">
+        <source>%n sample(s)</source>
+        <comment>a spin box&apos;s value and unit</comment>
+        <translation>
+            <numerusform>%n sample</numerusform>
+            <numerusform>%n samples</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>pl::ui::ParameterPanel</name>
     <message numerus="yes">
         <source>%n change(s) wait for Reset.</source>

@@ -109,7 +109,13 @@ private slots:
                 QVERIFY(model->tools()->spawnInRectangle(10, 2, 40, 12).starts_with("added"));
             runFrames(window, 30);
             QVERIFY(window.controller()->model()->stepCount() > 0);
-            QVERIFY2(window.controller()->series()->rows() >= 10, qPrintable(name)); // 1 sample per 3 frames
+            const auto* series = window.controller()->series();
+            if (model->plannedSteps() > 0 && model->stepCount() >= model->plannedSteps()) {
+                // A short run (the dam break's 300 steps) ends within the frames, sampled on the way.
+                QVERIFY2(series->rows() >= 5, qPrintable(name));
+            } else {
+                QVERIFY2(series->rows() >= 10, qPrintable(name)); // 1 sample per 3 frames
+            }
             QVERIFY(window.parameters()->editor("dt") != nullptr);
             if (!model->histograms().empty())
                 QVERIFY(window.histogram()->plot()->plottableCount() >= 2); // bars and the theory curve

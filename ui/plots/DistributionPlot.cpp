@@ -43,8 +43,13 @@ DistributionPlot::DistributionPlot(SimulationController* controller, const QStri
     controls->setContentsMargins(6, 2, 6, 0);
     controls->addWidget(new QLabel(tr("Average over"), this));
     window_->setRange(1, 200);
-    // "1 sample", "2 samples"; German "1 Stichprobe", "2 Stichproben".
-    const auto suffix = [this](int n) { window_->setSuffix(tr(" sample(s)", "after the number", n)); };
+    // "1 sample", "2 samples"; German "1 Stichprobe", "2 Stichproben": the plural sentence without its
+    // number.
+    const auto suffix = [this](int n) {
+        const QString text = tr("%n sample(s)", "a spin box's value and unit", n),
+                      number = QString::number(n);
+        window_->setSuffix(text.startsWith(number) ? text.mid(number.size()) : " " + text);
+    };
     connect(window_, &QSpinBox::valueChanged, this, suffix);
     suffix(window_->value());
     window_->setToolTip(tr("Time-averages the bars over the last samples (about 20 per second of running)"));

@@ -7,8 +7,10 @@
 
 #include <QFontMetricsF>
 #include <algorithm>
+#include <cmath>
 #include <memory>
 #include <qcustomplot.h>
+#include <typeinfo>
 
 namespace pl::ui {
 
@@ -77,10 +79,37 @@ void fitValueLabel(QCPAxisRect* rect) {
     axis->setProperty("pl_shownLabel", shown);
     axis->setProperty("pl_shownFont", font);
 }
+// QCustomPlot's linear ticker with a floor of two ticks: its "nice" step for a count of 2 can exceed half
+// the range, and a range around 0 (the v_x histogram's) then had the one tick 0. The step halves to the
+// next clean value until two multiples of it lie in the range.
+class AtLeastTwoTicks : public QCPAxisTicker {
+protected:
+    double getTickStep(const QCPRange& range) override {
+        double step = QCPAxisTicker::getTickStep(range);
+        const auto ticksIn = [&range](double s) {
+            return std::floor(range.upper / s) - std::ceil(range.lower / s) + 1;
+        };
+        for (int halvings = 0; halvings < 8 && step > 0 && ticksIn(step) < 2; ++halvings)
+            step = cleanMantissa(0.5 * step);
+        return step;
+    }
+};
+
+// A plain linear ticker becomes one with at least two ticks (log and time tickers stay as they are).
+void keepTwoTicks(QCPAxis* axis) {
+    if (typeid(*axis->ticker()) == typeid(QCPAxisTicker)) {
+        const int count = axis->ticker()->tickCount();
+        axis->setTicker(QSharedPointer<QCPAxisTicker>(new AtLeastTwoTicks));
+        axis->ticker()->setTickCount(count);
+    }
+}
+
 // Fewer ticks on a short or narrow axis, so its tick values never run into each other.
 void fitTickCounts(QCPAxisRect* rect) {
     QCPAxis* y = rect->axis(QCPAxis::atLeft);
     QCPAxis* x = rect->axis(QCPAxis::atBottom);
+    keepTwoTicks(y);
+    keepTwoTicks(x);
     const QFontMetricsF yMetrics(y->tickLabelFont()), xMetrics(x->tickLabelFont());
     const int rows = static_cast<int>(rect->height() / (kTickRowsPerLabel * yMetrics.height()));
     const int columns = static_cast<int>(
