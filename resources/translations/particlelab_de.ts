@@ -6,8 +6,8 @@
     <message numerus="yes">
         <source>mean of the last %n step(s)</source>
         <translation>
-            <numerusform>Mittel über den letzten %n Schritt</numerusform>
-            <numerusform>Mittel über die letzten %n Schritte</numerusform>
+            <numerusform>Mittel des letzten %n Schritts</numerusform>
+            <numerusform>Mittel der letzten %n Schritte</numerusform>
         </translation>
     </message>
     <message numerus="yes">
@@ -1684,6 +1684,34 @@ Wirkt nach „Zurücksetzen“.</translation>
     <message>
         <source>vhs</source>
         <translation>VHS</translation>
+    </message>
+    <message>
+        <source>A: kT = %1, KS distance %2</source>
+        <translation>A: kT = %1, KS-Abstand %2</translation>
+    </message>
+    <message>
+        <source>B: kT = %1, KS distance %2</source>
+        <translation>B: kT = %1, KS-Abstand %2</translation>
+    </message>
+    <message>
+        <source>T = %1 K, u_x = %2 m/s, %3 collisions each</source>
+        <translation>T = %1 K, u_x = %2 m/s, %3 Stöße je Teilchen</translation>
+    </message>
+    <message>
+        <source>beam %1 (%2 m/s)</source>
+        <translation>Strahl %1 (%2 m/s)</translation>
+    </message>
+    <message>
+        <source>kT = %1, KS distance %2</source>
+        <translation>kT = %1, KS-Abstand %2</translation>
+    </message>
+    <message>
+        <source>the whole domain: %1 molecules</source>
+        <translation>das ganze Gebiet: %1 Moleküle</translation>
+    </message>
+    <message>
+        <source>the whole domain: %1 molecules (free stream, shock layer and wake together)</source>
+        <translation>das ganze Gebiet: %1 Moleküle (Anströmung, Stoßschicht und Nachlauf zusammen)</translation>
     </message>
 </context>
 <context>

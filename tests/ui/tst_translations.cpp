@@ -4,6 +4,8 @@
 #include "ExperimentDocument.h"
 #include "MainWindow.h"
 #include "PreferencesDialog.h"
+#include "SimulationController.h"
+#include "i18n/CoreSentences.h"
 #include "i18n/CoreStrings.h"
 #include "i18n/Translations.h"
 #include "panels/ParameterPanel.h"
@@ -158,6 +160,32 @@ private slots:
         // Accelerators stay unique within the menu bar and within each menu, in German too.
         const QString clash = acceleratorClash(window);
         QVERIFY2(clash.isEmpty(), qPrintable(clash));
+    }
+
+    // Sentences the core builds with numbers: one template each in the catalogue, the numbers written
+    // with the language's decimal mark; choice values are shown translated and kept as keys.
+    void sentencesWithNumbersAndChoicesAreGerman() {
+        const ui::SentenceTemplate pattern = ui::sentenceTemplate("u_x = -1.138e-14 m/s, 2d, M4: 3 each.");
+        QCOMPARE(QString::fromStdString(pattern.text), QStringLiteral("u_x = %1 m/s, 2d, M4: %2 each."));
+        QCOMPARE(pattern.numbers, (std::vector<std::string>{"-1.138e-14", "3"}));
+        QVERIFY(ui::installLanguage("de"));
+        QCOMPARE(ui::coreSentence("kT = 0.52, KS distance 0.0123"),
+                 QStringLiteral("kT = 0,52, KS-Abstand 0,0123"));
+        QCOMPARE(ui::coreSentence("the whole domain: 32000 molecules"),
+                 QStringLiteral("das ganze Gebiet: 32000 Moleküle"));
+        QCOMPARE(QLocale().decimalPoint(), QStringLiteral(","));
+        ui::MainWindow window;
+        QVERIFY(window.document()->open("gas-classroom", true));
+        auto* integrator = qobject_cast<QComboBox*>(window.parameters()->editor("integrator"));
+        QVERIFY(integrator);
+        QCOMPARE(integrator->currentText(), QStringLiteral("Velocity-Verlet"));
+        integrator->setCurrentIndex(integrator->findText(QStringLiteral("Runge-Kutta 4")));
+        QVERIFY(integrator->currentIndex() >= 0);
+        emit integrator->activated(integrator->currentIndex());
+        QCOMPARE(std::get<std::string>(window.controller()->parameterValues().at("integrator")),
+                 std::string("rk4"));
+        window.document()->setModified(false);
+        QVERIFY(ui::installLanguage("en"));
     }
 
     void qtsOwnTextsFollow() {

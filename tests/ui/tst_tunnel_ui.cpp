@@ -129,6 +129,12 @@ private slots:
         QCOMPARE(ui::formatFieldValue(9.999e20), QStringLiteral("1.00 × 10²¹"));
         QCOMPARE(ui::formatFieldValue(-2.5e-7), QStringLiteral("-2.50 × 10⁻⁷"));
         QCOMPARE(ui::formatFieldValue(std::nan("")), QStringLiteral("—"));
+        // In the UI's language: the German decimal comma.
+        const QLocale before;
+        QLocale::setDefault(QLocale(QLocale::German, QLocale::Germany));
+        QCOMPARE(ui::formatFieldValue(1.0e21), QStringLiteral("1,00 × 10²¹"));
+        QCOMPARE(ui::formatFieldValue(2.5), QStringLiteral("2,5"));
+        QLocale::setDefault(before);
     }
 
     void choosingMachShowsTheMachField() {

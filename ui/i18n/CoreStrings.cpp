@@ -2,6 +2,8 @@
 // lupdate links only particlelab_core.
 #include "CoreStrings.h"
 
+#include "CoreSentences.h"
+
 #include "catalog/ModelCatalog.h"
 #include "common/sweep/CellOutcome.h"
 #include "gas/GasIntegratorTable.h"
@@ -97,11 +99,13 @@ std::vector<std::string> coreDisplayStrings() {
         const SceneView view = model->sceneView();
         for (const std::string* text : {&view.xLabel, &view.yLabel, &view.colourLabel, &view.hint})
             add(*text);
+        // Texts with numbers as their templates (CoreSentences.h): beam legends, histogram summaries.
         for (const std::string& category : view.categories)
-            if (!hasDigit(category)) add(category);
+            add(hasDigit(category) ? sentenceTemplate(category).text : category);
         for (const NamedHistogram& histogram : model->histograms()) {
             add(histogram.label);
             add(histogram.axis);
+            add(sentenceTemplate(histogram.summary).text);
         }
         // Sampled fields: the probe's and the Profile dock's names, and each field's legend title as the
         // `view` choice shows it.

@@ -14,7 +14,7 @@ inline constexpr const char* kCoreContext = "pl::core";
 // Every distinct core text a user can see: model titles and unit systems, each model's ParamSpec label,
 // unit, group and tooltip, and the legend, axis and hint texts of every built-in preset's scene and
 // histograms. Sorted, unique, no empty entries. Texts with numbers in them (histogram summaries, beam
-// legends) are not included: they change with every frame or parameter and cannot be looked up.
+// legends) change with every frame or parameter: they are included as their templates (CoreSentences.h).
 std::vector<std::string> coreDisplayStrings();
 
 // The texts as C++ that lupdate reads: one QT_TRANSLATE_NOOP(kCoreContext, "…") per text.

@@ -2,6 +2,7 @@
 // (qt_add_translations embeds ours under :/i18n; Qt's come from its installation).
 #include "Translations.h"
 
+#include "CoreSentences.h"
 #include "CoreStrings.h"
 #include "common/ParamSpec.h"
 
@@ -64,8 +65,10 @@ bool installLanguage(const QString& code) {
         if (*translator) QCoreApplication::installTranslator(translator->get());
     state.code = state.own ? QLocale(state.own->language()).name().section('_', 0, 0) : QStringLiteral("en");
     // Numbers are read and written in the language of the texts around them (German 2,5; English 2.5),
-    // not in a system setting the user does not see.
-    QLocale::setDefault(found ? locale : QLocale(QLocale::English, QLocale::UnitedStates));
+    // not in a system setting the user does not see: the catalogue's language, also where the system's
+    // locale is another (LANGUAGE=de under LANG=C picks the German texts).
+    QLocale::setDefault(found ? QLocale(state.own->language())
+                              : QLocale(QLocale::English, QLocale::UnitedStates));
     return found;
 }
 
@@ -83,6 +86,16 @@ void saveLanguage(const QString& code) {
 
 QString coreText(const std::string& text) {
     return QCoreApplication::translate(kCoreContext, text.c_str());
+}
+
+QString coreSentence(const std::string& sentence) {
+    const SentenceTemplate pattern = sentenceTemplate(sentence);
+    if (pattern.numbers.empty()) return coreText(sentence);
+    QString text = coreText(pattern.text);
+    const QLocale locale;
+    for (const std::string& number : pattern.numbers)
+        text = text.arg(QString::fromStdString(number).replace(QLatin1Char('.'), locale.decimalPoint()));
+    return text;
 }
 
 QString translatedLabel(const ParamSpec& spec) {

@@ -34,6 +34,9 @@ void saveLanguage(const QString& code);
 
 // A core text in the installed language; the text itself when no translation exists.
 QString coreText(const std::string& text);
+// A core sentence with numbers ("kT = 0.52, KS distance 0.012"): its template (CoreSentences.h) in the
+// installed language, the numbers written with the language's decimal mark.
+QString coreSentence(const std::string& sentence);
 QString translatedLabel(const ParamSpec& spec);
 QString translatedUnit(const ParamSpec& spec);
 QString translatedGroup(const ParamSpec& spec);

@@ -131,7 +131,7 @@ void DistributionPlot::redraw() {
             }
             theory->setData(xs, fs, true);
         }
-        summaries << QString::fromStdString(named.summary);
+        summaries << coreSentence(named.summary);
         plot_->xAxis->setLabel(coreText(named.axis));
         plot_->xAxis->setRangeLower(counts.lo());
     }

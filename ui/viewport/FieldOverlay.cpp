@@ -6,6 +6,7 @@
 #include "i18n/Translations.h"
 
 #include <QCoreApplication>
+#include <QLocale>
 #include <QPainter>
 #include <algorithm>
 #include <climits>
@@ -62,7 +63,7 @@ double paintParticleLegend(QPainter& painter, const ViewTransform& transform, co
             painter.drawEllipse(QPointF(frame.left() + 0.7 * line, y + 0.5 * line), 0.3 * line, 0.3 * line);
             painter.setPen(Qt::white);
             painter.drawText(QRectF(frame.left() + 1.4 * line, y, width - 1.6 * line, line), Qt::AlignVCenter,
-                             coreText(scene.categories[c]));
+                             coreSentence(scene.categories[c]));
         }
         return frame.bottom();
     }
@@ -97,27 +98,34 @@ void paintFieldLegend(QPainter& painter, const ViewTransform& transform, const S
                       double top) {
     const QFontMetricsF metrics(painter.font());
     const double line = metrics.height();
-    const double width = kLegendWidthLines * line;
-    const QRectF frame(transform.size().width() - width - kLegendMarginPx, top, width, 4.7 * line);
-    painter.setPen(Qt::NoPen);
-    painter.setBrush(kLegendBack);
-    painter.drawRoundedRect(frame, 4, 4);
-    const QRectF title(frame.left() + 0.5 * line, frame.top() + 0.2 * line, width - line, line);
-    painter.setPen(Qt::white);
-    painter.drawText(title, Qt::AlignHCenter | Qt::AlignVCenter,
-                     metrics.elidedText(coreText(field.label), Qt::ElideRight, title.width()));
-    const QRectF bar(title.left(), title.bottom() + 0.1 * line, title.width(), 0.8 * line);
-    paintColourBar(painter, bar, field.colours);
-    painter.setPen(Qt::white);
-    const QRectF labels(bar.left(), bar.bottom() + 0.1 * line, bar.width(), line);
-    painter.drawText(labels, Qt::AlignLeft | Qt::AlignVCenter, formatFieldValue(field.minimum));
-    painter.drawText(labels, Qt::AlignRight | Qt::AlignVCenter, formatFieldValue(field.maximum));
     // Over how much time the picture is an average: a moving shock needs a short, moving window.
     const int steps = static_cast<int>(std::min<long long>(field.sampledSteps, INT_MAX));
     const QString averaged =
         field.window > 0
             ? QCoreApplication::translate("FieldOverlay", "mean of the last %n step(s)", nullptr, steps)
             : QCoreApplication::translate("FieldOverlay", "mean of %n step(s)", nullptr, steps);
+    const QString title = coreText(field.label), lowest = formatFieldValue(field.minimum),
+                  highest = formatFieldValue(field.maximum);
+    // As wide as its longest line needs (German lines run longer), up to 60 % of the view.
+    const double needed =
+        std::max({metrics.horizontalAdvance(title), metrics.horizontalAdvance(averaged),
+                  metrics.horizontalAdvance(lowest) + metrics.horizontalAdvance(highest) + line});
+    const double width =
+        std::min(std::max(kLegendWidthLines * line, needed + 1.2 * line), 0.6 * transform.size().width());
+    const QRectF frame(transform.size().width() - width - kLegendMarginPx, top, width, 4.7 * line);
+    painter.setPen(Qt::NoPen);
+    painter.setBrush(kLegendBack);
+    painter.drawRoundedRect(frame, 4, 4);
+    const QRectF titleBox(frame.left() + 0.5 * line, frame.top() + 0.2 * line, width - line, line);
+    painter.setPen(Qt::white);
+    painter.drawText(titleBox, Qt::AlignHCenter | Qt::AlignVCenter,
+                     metrics.elidedText(title, Qt::ElideRight, titleBox.width()));
+    const QRectF bar(titleBox.left(), titleBox.bottom() + 0.1 * line, titleBox.width(), 0.8 * line);
+    paintColourBar(painter, bar, field.colours);
+    painter.setPen(Qt::white);
+    const QRectF labels(bar.left(), bar.bottom() + 0.1 * line, bar.width(), line);
+    painter.drawText(labels, Qt::AlignLeft | Qt::AlignVCenter, lowest);
+    painter.drawText(labels, Qt::AlignRight | Qt::AlignVCenter, highest);
     painter.drawText(labels.translated(0, line), Qt::AlignHCenter | Qt::AlignVCenter,
                      metrics.elidedText(averaged, Qt::ElideRight, labels.width()));
 }
@@ -157,15 +165,18 @@ void paintLegends(QPainter& painter, const ViewTransform& transform, const Scene
 QString formatFieldValue(double value) {
     if (std::isnan(value)) return QStringLiteral("—");
     const double size = std::abs(value);
-    if (size == 0.0 || (size >= kSmallestPlain && size < kLargestPlain))
-        return QString::number(value, 'g', 4);
+    const QLocale locale; // the UI's language: German 2,50 × 10²¹
+    if (size == 0.0 || (size >= kSmallestPlain && size < kLargestPlain)) {
+        QString plain = locale.toString(value, 'g', 4);
+        return plain.remove(locale.groupSeparator()); // 2634, not 2,634
+    }
     int exponent = static_cast<int>(std::floor(std::log10(size)));
     double mantissa = value / std::pow(10.0, exponent);
     if (std::abs(std::round(mantissa * 100.0) / 100.0) >= 10.0) { // 9.999e20 rounds to 10.00
         mantissa /= 10.0;
         ++exponent;
     }
-    return QStringLiteral("%1 × 10%2").arg(mantissa, 0, 'f', 2).arg(superscript(exponent));
+    return QStringLiteral("%1 × 10%2").arg(locale.toString(mantissa, 'f', 2), superscript(exponent));
 }
 
 QStringList probeLines(const std::vector<FieldValue>& values) {
