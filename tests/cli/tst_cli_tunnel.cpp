@@ -243,14 +243,14 @@ private slots:
         QVERIFY(!QFile::exists(series));
     }
 
-    // A step of 4.7 M molecules takes seconds: SIGINT in the middle of it undoes the step and ends the run
+    // A step of 2.4 M molecules takes seconds: SIGINT in the middle of it undoes the step and ends the run
     // within a second, at the last whole step, with its rows (before: the signal waited for the step).
     void aSignalEndsALongStepWithinASecond() {
         QTemporaryDir dir;
         const QString series = dir.filePath("series.csv");
         QProcess p;
         p.start(PARTICLELAB_CLI,
-                {"run", "tunnel-cylinder", "--set", "fn=5e12", "--set", "vhs_d_ref=5.3e-9", "--steps", "3",
+                {"run", "tunnel-cylinder", "--set", "fn=1e13", "--set", "vhs_d_ref=5.3e-9", "--steps", "3",
                  "--every", "1", "--threads", "1", "--backend", "cpu", "--quiet", "--out", series});
         QVERIFY(p.waitForStarted());
         QElapsedTimer clock;
