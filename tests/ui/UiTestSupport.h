@@ -2,8 +2,11 @@
 // answered automatically and counted.
 #pragma once
 
+#include <QAbstractSpinBox>
 #include <QApplication>
+#include <QLineEdit>
 #include <QMessageBox>
+#include <QScrollArea>
 #include <QSettings>
 #include <QStandardPaths>
 #include <QTest>
@@ -24,6 +27,21 @@ inline bool showActive(QWidget& window) {
     window.show();
     window.activateWindow();
     return QTest::qWaitForWindowActive(&window);
+}
+
+// Types text into a number field as a user does: scrolled into view, clicked into, all selected, the
+// keys, Return.
+inline void typeInto(QWidget* field, const QString& text) {
+    auto* box = qobject_cast<QAbstractSpinBox*>(field);
+    QVERIFY(box);
+    for (QWidget* w = box; w; w = w->parentWidget())
+        if (auto* scroll = qobject_cast<QScrollArea*>(w)) scroll->ensureWidgetVisible(box);
+    QLineEdit* edit = box->findChild<QLineEdit*>();
+    QTest::mouseClick(edit, Qt::LeftButton, {}, edit->rect().center());
+    QCOMPARE(QApplication::focusWidget(), box);
+    QTest::keyClick(box, Qt::Key_A, Qt::ControlModifier);
+    QTest::keyClicks(box, text);
+    QTest::keyClick(box, Qt::Key_Return);
 }
 
 // While alive, accepts every QMessageBox that opens and remembers its text.

@@ -26,19 +26,6 @@ using namespace pl;
 namespace {
 
 // Replaces a field's text as a user does: click into it, select all, type, Enter.
-void typeInto(QWidget* field, const QString& text) {
-    auto* box = qobject_cast<QAbstractSpinBox*>(field);
-    QVERIFY(box);
-    for (QWidget* w = box; w; w = w->parentWidget()) // scrolled into view, where the click can reach it
-        if (auto* scroll = qobject_cast<QScrollArea*>(w)) scroll->ensureWidgetVisible(box);
-    QLineEdit* edit = box->findChild<QLineEdit*>();
-    QTest::mouseClick(edit, Qt::LeftButton, {}, edit->rect().center());
-    QCOMPARE(QApplication::focusWidget(), box);
-    QTest::keyClick(box, Qt::Key_A, Qt::ControlModifier);
-    QTest::keyClicks(box, text);
-    QTest::keyClick(box, Qt::Key_Return);
-}
-
 QString allowedFor(const Model* model, const std::string& key) {
     return QString::fromStdString(describeAllowed(*findSpec(model->paramSpecs(), key)));
 }
@@ -96,7 +83,7 @@ private slots:
         const ParamValues before = model->params();
         QWidget* dt = panel_->editor("dt");
         QVERIFY(!looksRed(dt));
-        typeInto(dt, "10");
+        test::typeInto(dt, "10");
         QTest::qWait(60); // a dialog, were there one, would be seen and answered by now
 
         QCOMPARE(qobject_cast<QAbstractSpinBox*>(dt)->text(), QString("10")); // not reverted
@@ -113,7 +100,7 @@ private slots:
         QVERIFY(window_->windowImage().save(QString(PARTICLELAB_SCREENSHOT_DIR) +
                                             "/parameterpanel-rejected.png"));
 
-        typeInto(panel_->editor("dt"), "0.0002");
+        test::typeInto(panel_->editor("dt"), "0.0002");
         QVERIFY(panel_->problem("dt").isEmpty());
         QVERIFY(!line->isVisible());
         QVERIFY(!looksRed(dt));
@@ -123,7 +110,7 @@ private slots:
     void aNegativeDiameterIsReportedNotReverted() {
         test::MessageBoxAnswerer dialogs;
         const double before = std::get<double>(window_->controller()->model()->params().at("diameter_a"));
-        typeInto(panel_->editor("diameter_a"), "-0.1");
+        test::typeInto(panel_->editor("diameter_a"), "-0.1");
         QCOMPARE(qobject_cast<QAbstractSpinBox*>(panel_->editor("diameter_a"))->text(), QString("-0.1"));
         const QString problem = panel_->problem("diameter_a");
         QVERIFY2(problem.contains("Diameter (A)") && problem.contains("-0.1") &&
@@ -136,7 +123,7 @@ private slots:
     void errorsAcrossFieldsNameLabelsNotKeys() {
         // More disks than the particle cap: the message speaks of both fields by their labels.
         const double cap = std::get<double>(window_->controller()->model()->params().at("max_particles"));
-        typeInto(panel_->editor("count_a"), QString::number(static_cast<qint64>(cap) + 1));
+        test::typeInto(panel_->editor("count_a"), QString::number(static_cast<qint64>(cap) + 1));
         const QString problem = panel_->problem("count_a");
         QVERIFY2(problem.contains("Disks (A)") && problem.contains("Particle cap"), qPrintable(problem));
         static const QRegularExpression internalKey("\\b[a-z]+_[a-z0-9_]+\\b");
@@ -144,7 +131,7 @@ private slots:
     }
 
     void aFractionInAnIntegerFieldStaysAsTyped() {
-        typeInto(panel_->editor("count_a"), "2.5");
+        test::typeInto(panel_->editor("count_a"), "2.5");
         QCOMPARE(qobject_cast<QAbstractSpinBox*>(panel_->editor("count_a"))->text(), QString("2.5"));
         QVERIFY2(panel_->problem("count_a").contains("integer"), qPrintable(panel_->problem("count_a")));
     }
@@ -152,7 +139,7 @@ private slots:
     void textThatIsNoNumberStaysUntilEscape() {
         auto* dt = qobject_cast<QAbstractSpinBox*>(panel_->editor("dt"));
         const QString shown = dt->text();
-        typeInto(dt, "1e");
+        test::typeInto(dt, "1e");
         QCOMPARE(dt->text(), QString("1e"));
         QVERIFY2(panel_->problem("dt").contains("not a number"), qPrintable(panel_->problem("dt")));
         QVERIFY(looksRed(dt));
@@ -166,7 +153,7 @@ private slots:
     }
 
     void otherEditsLeaveARejectedFieldAlone() {
-        typeInto(panel_->editor("dt"), "10");
+        test::typeInto(panel_->editor("dt"), "10");
         QVERIFY(panel_->apply("gravity", 0.5).isEmpty()); // every field is shown again after a change
         QCOMPARE(qobject_cast<QAbstractSpinBox*>(panel_->editor("dt"))->text(), QString("10"));
         QVERIFY(!panel_->problem("dt").isEmpty());
@@ -178,7 +165,7 @@ private slots:
         ui::MainWindow german;
         QVERIFY(german.openPreset("gas-mixture"));
         QVERIFY(test::showActive(german));
-        typeInto(german.parameters()->editor("mass_a"), "2,5");
+        test::typeInto(german.parameters()->editor("mass_a"), "2,5");
         QVERIFY2(german.parameters()->problem("mass_a").isEmpty(),
                  qPrintable(german.parameters()->problem("mass_a")));
         QCOMPARE(std::get<double>(german.controller()->parameterValues().at("mass_a")),
@@ -196,7 +183,7 @@ private slots:
         QVERIFY(test::showActive(english));
         const double before = std::get<double>(english.controller()->model()->params().at("mass_a"));
         QWidget* mass = english.parameters()->editor("mass_a");
-        typeInto(mass, "2,5");
+        test::typeInto(mass, "2,5");
         QCOMPARE(qobject_cast<QAbstractSpinBox*>(mass)->text(), QString("2,5"));
         QVERIFY(looksRed(mass));
         const QString problem = english.parameters()->problem("mass_a");
@@ -208,7 +195,7 @@ private slots:
     void lettersTurnTheFieldRed() {
         const double before = std::get<double>(window_->controller()->model()->params().at("gravity"));
         QWidget* gravity = panel_->editor("gravity");
-        typeInto(gravity, "abc");
+        test::typeInto(gravity, "abc");
         QCOMPARE(qobject_cast<QAbstractSpinBox*>(gravity)->text(), QString("abc")); // not swallowed
         QVERIFY(looksRed(gravity));
         QVERIFY2(panel_->problem("gravity").contains("not a number"), qPrintable(panel_->problem("gravity")));
@@ -216,7 +203,7 @@ private slots:
     }
 
     void aTypedNumberKeepsItsForm() {
-        typeInto(panel_->editor("count_a"), "1e3");
+        test::typeInto(panel_->editor("count_a"), "1e3");
         QVERIFY2(panel_->problem("count_a").isEmpty(), qPrintable(panel_->problem("count_a")));
         QCOMPARE(std::get<double>(window_->controller()->parameterValues().at("count_a")), 1000.0);
         QCOMPARE(qobject_cast<QAbstractSpinBox*>(panel_->editor("count_a"))->text(), QString("1e3"));

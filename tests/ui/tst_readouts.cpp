@@ -18,18 +18,6 @@ using namespace pl;
 
 namespace {
 
-void typeInto(QWidget* field, const QString& text) {
-    auto* box = qobject_cast<QAbstractSpinBox*>(field);
-    QVERIFY(box);
-    for (QWidget* w = box; w; w = w->parentWidget())
-        if (auto* scroll = qobject_cast<QScrollArea*>(w)) scroll->ensureWidgetVisible(box);
-    QLineEdit* edit = box->findChild<QLineEdit*>();
-    QTest::mouseClick(edit, Qt::LeftButton, {}, edit->rect().center());
-    QTest::keyClick(box, Qt::Key_A, Qt::ControlModifier);
-    QTest::keyClicks(box, text);
-    QTest::keyClick(box, Qt::Key_Return);
-}
-
 double lastValue(ui::MainWindow& window, const char* column) {
     const int c = window.controller()->series()->column(column);
     const QVector<double> values = window.controller()->series()->values(c);
@@ -70,7 +58,7 @@ private slots:
         const double mass = std::get<double>(window.controller()->model()->params().at("mass_a"));
         QVERIFY(kT > 0);
 
-        typeInto(window.parameters()->editor("mass_a"), "25");
+        test::typeInto(window.parameters()->editor("mass_a"), "25");
         QCOMPARE(std::get<double>(window.controller()->model()->params().at("mass_a")), mass);
         QCOMPARE(std::get<double>(window.controller()->parameterValues().at("mass_a")), 25.0);
         QCOMPARE(window.controller()->pendingUntilReset().size(), std::size_t(1));
