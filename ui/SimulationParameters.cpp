@@ -44,8 +44,12 @@ QString SimulationController::setParameters(const ParamValues& values) {
         else
             pending_[key] = value;
     }
-    // The pair was valid a moment ago with the same live values, so this cannot be refused.
-    if (!builtWith.empty()) model_->setParams(builtWith);
+    // The model goes back to the values its state was built with. Should those not fit the new live
+    // values (a cross-field rule between the two), the model keeps the new ones: they still wait for Reset.
+    try {
+        if (!builtWith.empty()) model_->setParams(builtWith);
+    } catch (const std::exception&) {
+    }
     // Show (the `view` of a scene with sampled fields) chooses what is drawn, not the experiment.
     const bool viewOnly = values.size() == 1 && values.begin()->first == ViewChooser::kKey;
     if (!viewOnly) noteEdited();
