@@ -255,7 +255,9 @@ private slots:
         QVERIFY(controller.load(pl::loadPreset("gas-classroom")).isEmpty());
         controller.setStepsPerFrame(3);
         pl::ui::AppRecorder recorder(&controller);
-        QVERIFY(recorder.start(out, "gas-classroom").isEmpty());
+        pl::ui::AppClipOptions tenSteps;
+        tenSteps.stepsPerFrame = pl::ui::kAppStepsPerClipFrame;
+        QVERIFY(recorder.start(out, "gas-classroom", tenSteps).isEmpty());
         QVERIFY(recorder.isRecording());
         for (int frame = 0; frame < 130; ++frame) controller.advanceFrame(); // 390 steps
         QSignalSpy finished(&recorder, &pl::ui::AppRecorder::finished);
@@ -267,6 +269,13 @@ private slots:
                  qPrintable(finished.front().front().toString()));
         QCOMPARE(recorder.frames(), 40LL); // after 0, 10, …, 390 steps
         QCOMPARE(recorder.framesInLastClip(), 40LL);
+        // Without a number of steps, a clip frame is taken at the scene's watchable pace.
+        QVERIFY(recorder.start(dir.filePath("paced.mp4"), "gas-classroom").isEmpty());
+        QCOMPARE(recorder.options().stepsPerFrame,
+                 pl::ui::watchableStepsPerFrame(controller, pl::ui::kAppClipFps));
+        QVERIFY(recorder.options().stepsPerFrame >
+                pl::ui::kAppStepsPerClipFrame); // 476 for the classroom gas
+        recorder.finishNow();
         const Probe p = ffprobe(out);
         QCOMPARE(p.codec, QString("h264"));
         QCOMPARE(p.frames, 40LL);

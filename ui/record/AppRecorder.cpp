@@ -12,6 +12,7 @@
 #include "plots/SeriesPlotSpecs.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace pl::ui {
 
@@ -19,6 +20,26 @@ namespace {
 constexpr int kDrainPollMs = 100;             // how often the draining progress is reported
 constexpr double kBytesPerSceneParticle = 16; // SceneView: x, y, radius, value as floats
 } // namespace
+
+int watchableStepsPerFrame(double watchableRate, double dt, int fps) {
+    if (!(watchableRate > 0) || !(dt > 0) || fps < 1) return kAppStepsPerClipFrame;
+    const double steps = std::round(watchableRate / (dt * fps));
+    return static_cast<int>(std::clamp(steps, 1.0, static_cast<double>(kMaxStepsPerClipFrame)));
+}
+
+int watchableStepsPerFrame(const SimulationController& controller, int fps) {
+    return watchableStepsPerFrame(controller.watchableRate(), stepTime(controller), fps);
+}
+
+double stepTime(const SimulationController& controller) {
+    const Model* model = controller.model();
+    if (!model) return 0.0;
+    const ParamValues params = model->params();
+    const auto dt = params.find("dt");
+    return dt != params.end() && std::holds_alternative<double>(dt->second)
+               ? std::abs(std::get<double>(dt->second))
+               : 0.0;
+}
 
 AppRecorder::AppRecorder(SimulationController* controller, QObject* parent)
     : QObject(parent), controller_(controller) {
@@ -43,6 +64,8 @@ QString AppRecorder::start(const QString& path, const QString& title, const AppC
     if (draining_) return tr("The previous clip is still being finished.");
     if (!model || isRecording()) return tr("Nothing to record.");
     options_ = options;
+    if (options_.stepsPerFrame < 1)
+        options_.stepsPerFrame = watchableStepsPerFrame(*controller_, options.fps);
     look_ = ClipLook{};
     look_.size = options.size;
     look_.fps = options.fps;
@@ -73,7 +96,7 @@ QString AppRecorder::start(const QString& path, const QString& title, const AppC
     problem_.clear();
     frames_ = 0;
     capture(); // the first frame: the state as it is now
-    controller_->watchSteps(options.stepsPerFrame, [this] { capture(); });
+    controller_->watchSteps(options_.stepsPerFrame, [this] { capture(); });
     emit recordingChanged(true);
     return {};
 }

@@ -20,21 +20,32 @@ class ClipWriter;
 class SeriesPlot;
 class SimulationController;
 
-inline constexpr int kAppStepsPerClipFrame = 10; // as the CLI's --steps-per-frame
+inline constexpr int kAppStepsPerClipFrame = 10; // as the CLI's --steps-per-frame; where no pace is known
 inline constexpr int kAppClipFps = 30;
 inline constexpr QSize kAppClipSize{1280, 720};
 // The most the queue of frames waiting for the encoder may hold, in seconds of clip and in bytes: a
 // burst of slow encoding never stalls the scene, and a huge scene never fills the memory.
 inline constexpr int kAppQueueSeconds = 4;
+inline constexpr int kMaxStepsPerClipFrame = 100000;
 inline constexpr double kAppQueueBytes = 512.0 * 1024 * 1024;
 
-// What the Record dialog chose (RecordDialog.h); the defaults are the CLI's.
+// The steps between two frames that show `watchableRate` simulated time per second of clip [time unit/s]
+// at `fps` with a step of `dt` [time unit]; at least 1. kAppStepsPerClipFrame where the rate is unknown.
+int watchableStepsPerFrame(double watchableRate, double dt, int fps);
+// The same for the controller's scene (its kind's watchable rate and |dt|).
+int watchableStepsPerFrame(const SimulationController& controller, int fps);
+// |dt| of the controller's scene [its unit of time]; 0 without a model.
+double stepTime(const SimulationController& controller);
+
+// What the Record dialog chose (RecordDialog.h); the size and frame rate are the CLI's defaults.
 struct AppClipOptions {
-    QSize size = kAppClipSize;                 // [px]
-    int fps = kAppClipFps;                     // [frames/s]
-    int stepsPerFrame = kAppStepsPerClipFrame; // model steps between two frames
-    bool captions = true;                      // the title and the time readout
-    QString plot; // a plot's object name ("energyPlot") beside the scene; empty: none
+    QSize size = kAppClipSize; // [px]
+    int fps = kAppClipFps;     // [frames/s]
+    // Model steps between two frames; 0: the scene's watchable pace at this frame rate (as the dialog
+    // offers), so that a clip frame is rarely wanted faster than the encoder can take it.
+    int stepsPerFrame = 0;
+    bool captions = true; // the title and the time readout
+    QString plot;         // a plot's object name ("energyPlot") beside the scene; empty: none
 };
 
 class AppRecorder : public QObject {

@@ -36,7 +36,6 @@ const SizePreset kSizePresets[] = {{{640, 360}, "360p"},
                                    {{1280, 720}, "720p"},
                                    {{1920, 1080}, "1080p"},
                                    {{1080, 1080}, ""}};
-constexpr int kMaxStepsPerClipFrame = 100000;
 const ClipFormat kFormats[] = {ClipFormat::Mp4, ClipFormat::WebM, ClipFormat::Gif};
 
 QString sizeText(QSize size) {
@@ -44,12 +43,6 @@ QString sizeText(QSize size) {
 }
 
 } // namespace
-
-int watchableStepsPerFrame(double watchableRate, double dt, int fps) {
-    if (!(watchableRate > 0) || !(dt > 0) || fps < 1) return kAppStepsPerClipFrame;
-    const double steps = std::round(watchableRate / (dt * fps));
-    return static_cast<int>(std::clamp(steps, 1.0, static_cast<double>(kMaxStepsPerClipFrame)));
-}
 
 QString clipSuffix(ClipFormat format) {
     switch (format) {
@@ -167,33 +160,18 @@ RecordDialog::RecordDialog(SimulationController* controller, QWidget* parent)
     connect(heightSpin_, &QSpinBox::valueChanged, this, &RecordDialog::check);
     connect(formatChooser_, &QComboBox::currentIndexChanged, this, &RecordDialog::check);
     connect(fpsSpin_, &QSpinBox::valueChanged, this, [this] {
-        if (followsPace_)
-            stepsSpin_->setValue(
-                watchableStepsPerFrame(controller_->watchableRate(), stepTime(), fpsSpin_->value()));
+        if (followsPace_) stepsSpin_->setValue(watchableStepsPerFrame(*controller_, fpsSpin_->value()));
         updatePace();
     });
     connect(stepsSpin_, &QSpinBox::valueChanged, this, [this] {
         // The user's own number, unless it is what the pace gives at this frame rate.
-        followsPace_ = stepsSpin_->value() ==
-                       watchableStepsPerFrame(controller_->watchableRate(), stepTime(), fpsSpin_->value());
+        followsPace_ = stepsSpin_->value() == watchableStepsPerFrame(*controller_, fpsSpin_->value());
         updatePace();
     });
-    connect(watchableButton_, &QPushButton::clicked, this, [this] {
-        stepsSpin_->setValue(
-            watchableStepsPerFrame(controller_->watchableRate(), stepTime(), fpsSpin_->value()));
-    });
+    connect(watchableButton_, &QPushButton::clicked, this,
+            [this] { stepsSpin_->setValue(watchableStepsPerFrame(*controller_, fpsSpin_->value())); });
     updateSize();
     updatePace();
-}
-
-double RecordDialog::stepTime() const {
-    const Model* model = controller_->model();
-    if (!model) return 0.0;
-    const ParamValues params = model->params();
-    const auto dt = params.find("dt");
-    return dt != params.end() && std::holds_alternative<double>(dt->second)
-               ? std::abs(std::get<double>(dt->second))
-               : 0.0;
 }
 
 void RecordDialog::readSettings() {
@@ -214,9 +192,8 @@ void RecordDialog::readSettings() {
     fpsSpin_->setValue(std::clamp(settings.value("record/fps", kAppClipFps).toInt(), 1, kMaxClipFps));
     const QVariant steps = settings.value("record/stepsPerFrame/" + kind_);
     followsPace_ = !steps.isValid();
-    stepsSpin_->setValue(
-        followsPace_ ? watchableStepsPerFrame(controller_->watchableRate(), stepTime(), fpsSpin_->value())
-                     : steps.toInt());
+    stepsSpin_->setValue(followsPace_ ? watchableStepsPerFrame(*controller_, fpsSpin_->value())
+                                      : steps.toInt());
     captionsCheck_->setChecked(settings.value("record/captions", true).toBool());
 }
 
@@ -246,7 +223,7 @@ void RecordDialog::updateSize() {
 }
 
 void RecordDialog::updatePace() {
-    const double perFrame = stepsSpin_->value() * stepTime();
+    const double perFrame = stepsSpin_->value() * stepTime(*controller_);
     const QString unit = controller_->timeUnit();
     paceLabel_->setText(tr("%1 %2 of simulated time per frame, %3 %2 per second of clip")
                             .arg(QString::number(perFrame, 'g', 3), unit,

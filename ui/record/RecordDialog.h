@@ -21,10 +21,6 @@ namespace pl::ui {
 
 class SimulationController;
 
-// The steps between two frames that show `watchableRate` simulated time per second of clip [time unit/s]
-// at `fps` with a step of `dt` [time unit]; at least 1. kAppStepsPerClipFrame where the rate is unknown.
-int watchableStepsPerFrame(double watchableRate, double dt, int fps);
-
 // The file to write: the chosen path when its suffix names a clip format (the format follows the file),
 // else the path with the suffix of `format` added.
 QString clipPathFor(const QString& chosen, ClipFormat format);
@@ -49,7 +45,6 @@ private:
     void updateSize();
     void updatePace();
     void check();
-    double stepTime() const; // |dt| of the running scene [time unit]
 
     SimulationController* controller_;
     QString kind_;
