@@ -5,6 +5,7 @@
 #include "MainWindow.h"
 #include "PreferencesDialog.h"
 #include "SimulationController.h"
+#include "SpringSlider.h"
 #include "ViewChooser.h"
 #include "catalog/ModelCatalog.h"
 #include "i18n/Translations.h"
@@ -302,7 +303,7 @@ void MainWindow::createToolPalette() {
     bar->addAction(gravity_);
     bar->addSeparator();
     bar->addWidget(new QLabel(tr(" Cool "), bar));
-    heat_ = new QSlider(Qt::Horizontal, bar);
+    heat_ = new SpringSlider(Qt::Horizontal, bar);
     heat_->setObjectName("heatSlider");
     heat_->setRange(-100, 100);
     heat_->setFixedWidth(140);
@@ -311,7 +312,8 @@ void MainWindow::createToolPalette() {
                          "released"));
     connect(heat_, &QSlider::valueChanged, controller_,
             [this](int v) { controller_->setHeatRate(v / 100.0); });
-    connect(heat_, &QSlider::sliderReleased, heat_, [this] { heat_->setValue(0); });
+    connect(heat_, &QSlider::sliderReleased, heat_,
+            [this] { heat_->setValue(0); }); // a drag ended in code too
     bar->addWidget(heat_);
     bar->addWidget(new QLabel(tr(" Heat "), bar));
     viewChooser_->addTo(bar);

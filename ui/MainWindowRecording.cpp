@@ -4,12 +4,12 @@
 #include "MainWindow.h"
 
 #include "ExperimentDocument.h"
+#include "FileDialogs.h"
 #include "SimulationController.h"
 #include "record/AppRecorder.h"
 #include "record/RecordDialog.h"
 #include "report/LabReport.h"
 
-#include <QFileDialog>
 #include <QLabel>
 #include <QMenu>
 #include <QMessageBox>
@@ -24,8 +24,9 @@ void MainWindow::createReportAction(QMenu* file) {
     report->setObjectName("exportReportAction");
     report->setStatusTip(tr("Write a lab report of the experiment: parameters, run, scene, plots, readouts"));
     connect(report, &QAction::triggered, this, [this] {
-        const QString path = QFileDialog::getSaveFileName(
-            this, tr("Export report"), document_->title() + ".pdf", tr("PDF (*.pdf);;Web page (*.html)"));
+        const QString path =
+            files::saveFileName(this, files::Place::Exports, tr("Export report"), document_->title() + ".pdf",
+                                tr("PDF (*.pdf);;Web page (*.html)"));
         if (path.isEmpty()) return;
         const QString error =
             exportLabReport(*controller_, document_->title(), document_->description(), path);
@@ -55,9 +56,9 @@ void MainWindow::createRecordAction(QMenu* sim, QToolBar* bar) {
         recordAction_->setChecked(false); // until the clip starts
         RecordDialog dialog(controller_, this);
         if (dialog.exec() != QDialog::Accepted) return;
-        const QString chosen = QFileDialog::getSaveFileName(
-            this, tr("Record clip"), document_->title() + "." + clipSuffix(dialog.format()),
-            tr("MP4 video (*.mp4);;WebM video (*.webm);;GIF (*.gif)"));
+        const QString chosen = files::saveFileName(this, files::Place::Exports, tr("Record clip"),
+                                                   document_->title() + "." + clipSuffix(dialog.format()),
+                                                   tr("MP4 video (*.mp4);;WebM video (*.webm);;GIF (*.gif)"));
         const QString path = clipPathFor(chosen, dialog.format());
         const QString error =
             path.isEmpty() ? QString() : recorder_->start(path, document_->title(), dialog.options());

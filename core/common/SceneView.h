@@ -55,8 +55,11 @@ struct SceneView {
     // Particles: position [L], radius [L] (0: a point of a few pixels) and colour value.
     std::vector<float> x, y, radius, value;
     ColourMap colours = ColourMap::Thermal;
-    std::string colourLabel;             // legend title, e.g. "speed"
-    double colourMax = 1.0;              // the physical value at the top of the colour scale
+    std::string colourLabel; // legend title, e.g. "speed"
+    double colourMax = 1.0;  // the physical value at the top of the colour scale
+    // The rms colour value the top was chosen for (the gas: 1/2.8, its top at 2.8 × the initial rms
+    // speed): a viewport may raise the top as the rms grows past it (a heated gas). 0: a fixed scale.
+    double colourRms = 0.0;
     std::vector<std::string> categories; // legend entries for ColourMap::Category
 
     std::vector<Obstacle> obstacles;

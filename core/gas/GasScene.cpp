@@ -40,6 +40,7 @@ SceneView GasModel::sceneFrame() const {
     view.bottom = params_.bottom();
     view.top = params_.top();
     view.colourMax = kColourScaleOverRms * initialRmsSpeed();
+    view.colourRms = 1.0 / kColourScaleOverRms;
     view.colours = ColourMap::Thermal;
     view.colourLabel = "speed";
     view.obstacles = obstacles_;

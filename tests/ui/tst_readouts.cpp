@@ -12,6 +12,8 @@
 #include <QAbstractSpinBox>
 #include <QLineEdit>
 #include <QScrollArea>
+#include <QSlider>
+#include <QWheelEvent>
 #include <QtTest>
 
 using namespace pl;
@@ -127,6 +129,26 @@ private slots:
         window.document()->setModified(false);
     }
 
+    // Heat acts while it is held: a press on the groove (which steps the handle on) and its release leave
+    // no heater running, nor does the wheel turn one on.
+    void heatSpringsBackHoweverItWasMoved() {
+        ui::MainWindow window;
+        QVERIFY(window.openPreset("gas-classroom"));
+        QVERIFY(test::showActive(window));
+        auto* heat = window.findChild<QSlider*>("heatSlider");
+        QVERIFY(heat && heat->isVisible());
+        const QPoint rightOfHandle(heat->width() - 4, heat->height() / 2);
+        QTest::mousePress(heat, Qt::LeftButton, {}, rightOfHandle);
+        QVERIFY(heat->value() > 0);
+        QTest::mouseRelease(heat, Qt::LeftButton, {}, rightOfHandle, 300);
+        QCOMPARE(heat->value(), 0);
+        QWheelEvent wheel(QPointF(rightOfHandle), heat->mapToGlobal(QPointF(rightOfHandle)), {},
+                          QPoint(0, 120), Qt::NoButton, {}, Qt::NoScrollPhase, false);
+        QApplication::sendEvent(heat, &wheel);
+        QCOMPARE(heat->value(), 0);
+        window.document()->setModified(false);
+    }
+
     // Heated to about four times its temperature, the gas keeps a gradient of colours on the automatic
     // scale; the fixed scale shows it red hot.
     void theColourScaleFollowsAHeatedGas() {
@@ -147,6 +169,13 @@ private slots:
         automatic->trigger();
         QCOMPARE(colourTop(), start);
         automatic->trigger();
+        window.document()->setModified(false);
+
+        // The fluid's and the tunnel's scales are designed fixed ones: a dam break in motion keeps its top.
+        QVERIFY(window.openPreset("fluid-dam-break"));
+        const double fluidTop = colourTop();
+        for (int frame = 0; frame < 20; ++frame) window.controller()->advanceFrame();
+        QCOMPARE(colourTop(), fluidTop);
         window.document()->setModified(false);
     }
 };

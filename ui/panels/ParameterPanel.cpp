@@ -110,11 +110,15 @@ void ParameterPanel::rebuild() {
             auto* box = new QGroupBox(translatedGroup(spec), content_);
             form = new QFormLayout(box);
             form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
+            // Long labels (German ones) wrap, and a field that still does not fit goes below its label:
+            // never a field cut off at the panel's edge.
+            form->setRowWrapPolicy(QFormLayout::WrapLongRows);
             groups_->addWidget(box);
         }
         QWidget* editor = createEditor(spec);
         editor->setToolTip(tooltipFor(spec));
         auto* label = new QLabel(labelFor(spec), editor->parentWidget());
+        label->setWordWrap(true);
         label->setToolTip(editor->toolTip());
         label->setBuddy(editor);
         form->addRow(label, editor);

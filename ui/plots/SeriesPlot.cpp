@@ -8,6 +8,7 @@
 #include "ReadablePlot.h"
 #include "SimulationController.h"
 
+#include <QLocale>
 #include <QVBoxLayout>
 #include <algorithm>
 #include <cmath>
@@ -167,9 +168,11 @@ void SeriesPlot::refresh() {
             graph->addToLegend(b.legend);
         else
             graph->removeFromLegend(b.legend);
-        // The legend shows the latest value: the number a teacher reads out.
+        // The legend shows the latest value: the number a teacher reads out, in the UI's language.
+        QLocale locale;
+        locale.setNumberOptions(QLocale::OmitGroupSeparator);
         graph->setName(!values.isEmpty() && std::isfinite(values.back())
-                           ? QStringLiteral("%1  %2").arg(b.label).arg(values.back(), 0, 'g', 4)
+                           ? QStringLiteral("%1  %2").arg(b.label, locale.toString(values.back(), 'g', 4))
                            : b.label);
     }
     for (const BackKey& key : backKeys_) {

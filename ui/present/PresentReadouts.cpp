@@ -9,6 +9,7 @@
 #include <QEvent>
 #include <QGridLayout>
 #include <QLabel>
+#include <QLocale>
 #include <cmath>
 
 namespace pl::ui {
@@ -75,7 +76,10 @@ QString PresentReadouts::valueText(const ReadoutSpec& spec, int column) const {
     if (table.rows() == 0) return QStringLiteral("—");
     const double v = table.row(table.rows() - 1)[static_cast<std::size_t>(column)] * spec.scale;
     if (!std::isfinite(v)) return QStringLiteral("—");
-    const QString number = QString::number(v, spec.format, spec.precision);
+    // In the UI's language (German 0,474), without group separators, as the plots write numbers.
+    QLocale locale;
+    locale.setNumberOptions(QLocale::OmitGroupSeparator);
+    const QString number = locale.toString(v, spec.format, spec.precision);
     return spec.unit.isEmpty() ? number : QStringLiteral("%1 %2").arg(number, spec.unit);
 }
 

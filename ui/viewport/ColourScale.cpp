@@ -1,5 +1,6 @@
 // ColourScale: the rms of the colour values (a strided sample of at most 4096 particles) against the
-// reference, smoothed per frame so a step change of temperature re-scales in about a third of a second.
+// scene's colourRms, smoothed per frame so a step change of temperature re-scales in about a third of a
+// second.
 #include "ColourScale.h"
 
 #include <algorithm>
@@ -13,19 +14,8 @@ constexpr double kSmoothing = 0.2;         // share of the way to the target eac
 constexpr double kRescaleThreshold = 0.02; // growth below this keeps the model's top exactly
 } // namespace
 
-void ColourScale::restart() {
-    reference_ = 0.0;
-    modelTop_ = 0.0;
-    factor_ = 1.0;
-}
-
 void ColourScale::apply(SceneView& scene) {
-    if (scene.colours == ColourMap::Category || scene.value.empty()) return;
-    // The values are |v| / colourMax: the model's own top changed (a new initial temperature) starts anew.
-    if (scene.colourMax != modelTop_) {
-        restart();
-        modelTop_ = scene.colourMax;
-    }
+    if (!(scene.colourRms > 0) || scene.value.empty()) return;
     const std::size_t stride = std::max<std::size_t>(1, scene.value.size() / kSampledParticles);
     double sum = 0.0;
     std::size_t counted = 0;
@@ -33,10 +23,7 @@ void ColourScale::apply(SceneView& scene) {
         sum += double(scene.value[i]) * scene.value[i];
     const double rms = std::sqrt(sum / static_cast<double>(counted));
     if (!std::isfinite(rms)) return;
-    if (reference_ <= 0.0) reference_ = rms;
-    if (reference_ <= 0.0) return; // everything at rest: nothing to scale against yet
-    const double target = std::max(1.0, rms / reference_);
-    factor_ += kSmoothing * (target - factor_);
+    factor_ += kSmoothing * (std::max(1.0, rms / scene.colourRms) - factor_);
     if (!automatic_ || factor_ < 1.0 + kRescaleThreshold) return;
     const float inverse = static_cast<float>(1.0 / factor_);
     for (float& v : scene.value) v *= inverse;

@@ -69,7 +69,9 @@ double paintParticleLegend(QPainter& painter, const ViewTransform& transform, co
     }
     // The title sits between the ends of the scale where it fits, else on a line of its own above.
     const QString title = coreText(scene.colourLabel);
-    const QString top = QString::number(scene.colourMax, 'g', 3);
+    QLocale locale;
+    locale.setNumberOptions(QLocale::OmitGroupSeparator);
+    const QString top = locale.toString(scene.colourMax, 'g', 3);
     const double inner = width - line;
     const bool ownLine = metrics.horizontalAdvance(title) + 2 * metrics.horizontalAdvance(top) + line > inner;
     const double titleHeight = ownLine ? line : 0.0;

@@ -29,7 +29,7 @@ void paintNotice(QPainter& painter, QRect area, const QString& text) {
     const QRect textBox = painter.fontMetrics().boundingRect(QRect(0, 0, width, area.height()),
                                                              Qt::AlignCenter | Qt::TextWordWrap, text);
     QRect box = textBox.adjusted(-margin / 2, -margin / 2, margin / 2, margin / 2);
-    box.moveTopLeft(QPoint(area.center().x() - box.width() / 2, area.top() + margin));
+    box.moveCenter(area.center()); // over the scene, clear of the legends along the top
     painter.setRenderHint(QPainter::Antialiasing);
     painter.setPen(QPen(QColor(230, 120, 60), 2));
     painter.setBrush(QColor(20, 22, 30, 230));

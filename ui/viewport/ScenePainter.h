@@ -33,7 +33,7 @@ void paintSceneBodies(QPainter& painter, const ViewTransform& transform, const S
 void paintScenePiston(QPainter& painter, const ViewTransform& transform, const SceneView& scene,
                       bool active = false);
 
-// A sentence the user must read before going on (the run stopped: Reset), in a dark box across the top
+// A sentence the user must read before going on (the run stopped: Reset), in a dark box in the middle
 // of `area`, wrapped to fit.
 void paintNotice(QPainter& painter, QRect area, const QString& text);
 

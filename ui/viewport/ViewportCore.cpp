@@ -49,7 +49,10 @@ ViewportCore::ViewportCore(SimulationController* controller, QWidget* widget)
 void ViewportCore::beginPaint() {
     const Model* model = controller_->model();
     scene_ = !model ? SceneView{} : drawsGpuBuffers_ ? model->sceneViewSharingGpu() : model->sceneView();
-    colourScale_.apply(scene_);
+    // A reset run starts at the model's top again; an exploded state's speeds say nothing about a scale.
+    if (model && model->stepCount() < paintedStep_) colourScale_.restart();
+    paintedStep_ = model ? model->stepCount() : 0;
+    if (model && !model->failure()) colourScale_.apply(scene_);
     transform_.fit(scene_, widget_->size(), kSceneMarginPx);
 }
 

@@ -14,6 +14,7 @@
 #include <QPointF>
 #include <QRectF>
 #include <QStringList>
+#include <cstdint>
 #include <functional>
 #include <optional>
 
@@ -94,6 +95,7 @@ private:
     QWidget* widget_;
     SceneView scene_;
     ColourScale colourScale_;
+    std::int64_t paintedStep_ = 0; // the step count of the last frame drawn: a smaller one is a Reset
     ViewTransform transform_;
     ViewportTool tool_ = ViewportTool::Drag;
 
