@@ -4,6 +4,11 @@
 // data folder that is a file is refused before anything runs.
 #include "CliRunner.h"
 
+#include "catalog/ModelCatalog.h"
+#include "common/Preset.h"
+#include "common/TimeSeries.h"
+#include "report/ReportTheory.h"
+
 #include <QDir>
 #include <QFile>
 #include <QImage>
@@ -169,6 +174,35 @@ private slots:
         QVERIFY(!QFileInfo::exists(dir.filePath("r.pdf")));
         QVERIFY(taken.open(QIODevice::ReadOnly));
         QCOMPARE(taken.readAll(), QByteArray("mine"));
+    }
+
+    // After the piston moved, kT·A at the end against its start: close to 1 for a piston slower than the
+    // disks (the 2D adiabat, γ = 2), and computed from the series the report reads.
+    void aCompressionIsSetAgainstTheAdiabat() {
+        pl::Preset preset = pl::loadPreset("gas-classroom");
+        preset.params["piston_enabled"] = true;
+        preset.params["piston_x"] = 1.0; // the right wall
+        const auto built = pl::createModel("gas");
+        built->reset(preset);
+        pl::Model& model = *built;
+        pl::TimeSeries series(model.seriesColumns()); // sampled as the app and the CLI sample it
+        series.append(model.sampleSeries());
+        QCOMPARE(pl::ui::theoryReadouts(model, series).size(), std::size_t(2)); // KS and the fit only
+        model.tools()->dragPiston(0.8); // a tenth of the area, at the tool speed (0.3 × the rms speed)
+        for (int s = 1; s <= 6000; ++s) {
+            model.step();
+            if (s % 200 == 0) series.append(model.sampleSeries());
+        }
+        QVERIFY(std::abs(model.tools()->pistonX() - 0.8) < 1e-9);
+        const auto rows = pl::ui::theoryReadouts(model, series);
+        const auto row = std::find_if(rows.begin(), rows.end(),
+                                      [](const pl::ui::ReportRow& r) { return r.name.startsWith("kT·A"); });
+        QVERIFY(row != rows.end());
+        QVERIFY2(row->name.contains("area × 0.9"), qPrintable(row->name));
+        const double ratio = row->value.toDouble();
+        qInfo("kT·A end / start after compressing to 0.9 of the area: %.4f", ratio);
+        QVERIFY2(ratio > 0.97 && ratio < 1.1, qPrintable(row->value));
+        QVERIFY2(row->note.contains("γ = 2"), qPrintable(row->note));
     }
 
     void aWrongSuffixIsRefusedBeforeTheRun() {

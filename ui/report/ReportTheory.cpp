@@ -22,6 +22,8 @@ namespace {
 constexpr double kKsSignificance = 0.01;  // the 1 % critical value
 constexpr double kFreeMolecularKn = 10.0; // Kn from which a body sees free-molecular flow
 constexpr double kMaxwellianKurtosis = 3.0;
+constexpr double kAreaChanged = 0.05;  // a compression or expansion: the area changed by more than this
+constexpr double kOnTheAdiabat = 0.05; // kT·A within this of its start: the slow piston's adiabat
 
 QString number(double value) {
     return QString::number(value, 'g', 4);
@@ -34,6 +36,10 @@ QString percent(double share) {
 class Columns {
 public:
     explicit Columns(const TimeSeries& series) : series_(series) {}
+    double first(const std::string& name) const {
+        const int c = index(name);
+        return c < 0 || series_.rows() == 0 ? NAN : series_.row(0)[static_cast<std::size_t>(c)];
+    }
     double last(const std::string& name) const {
         const int c = index(name);
         return c < 0 || series_.rows() == 0 ? NAN
@@ -119,6 +125,32 @@ void gasRows(const Model& model, const Columns& columns, std::vector<ReportRow>&
                                 "the histogram differs from the fitted curve by %1 of its area")
                      .arg(percent(areaOutsideTheory(*histogram)))});
     }
+}
+
+// A compression or expansion by the piston: on the adiabat of a 2D monatomic ideal gas (γ = 2) kT·A stays
+// what it was (docs/gas.md); a fast piston drives a compression wave and heats more. The area is the one
+// the ideal-gas pressure was computed with, A = N kT / p_ideal.
+void compressionRows(const Columns& columns, std::vector<ReportRow>& rows) {
+    const auto area = [&](bool atEnd) {
+        const auto read = [&](const std::string& name) {
+            return atEnd ? columns.last(name) : columns.first(name);
+        };
+        return read("particles") * read("kT") / read("pressure_ideal");
+    };
+    const double a0 = area(false), a1 = area(true);
+    if (!std::isfinite(a0) || !std::isfinite(a1) || !(a0 > 0) || std::abs(a1 / a0 - 1.0) <= kAreaChanged)
+        return;
+    const double ratio = columns.last("kT") * a1 / (columns.first("kT") * a0);
+    rows.push_back({QStringLiteral("kT·A at the end against its start (area × %1)").arg(number(a1 / a0)),
+                    number(ratio),
+                    {},
+                    QStringLiteral("on the adiabat of a 2D monatomic gas (γ = 2) kT·A stays constant: %1")
+                        .arg(std::abs(ratio - 1.0) <= kOnTheAdiabat
+                                 ? QStringLiteral("within 5 %, a slow (adiabatic) change")
+                                 : (ratio > 1.0 ? QStringLiteral("heated beyond the adiabat (a fast piston's "
+                                                                 "compression wave, or Heat)")
+                                                : QStringLiteral("cooled below the adiabat (Cool, or a fast "
+                                                                 "expansion)")))});
 }
 
 void dsmcRows(const Columns& columns, std::vector<ReportRow>& rows) {
@@ -216,6 +248,7 @@ std::vector<ReportRow> theoryReadouts(const Model& model, const TimeSeries& seri
     const Columns columns(series);
     // A kind gets the rows whose columns (or model) it has: no list of kinds to keep up to date.
     gasRows(model, columns, rows);
+    compressionRows(columns, rows);
     dsmcRows(columns, rows);
     tunnelRows(model, columns, rows);
     fluidRows(columns, rows);
