@@ -84,6 +84,7 @@ MainWindow::MainWindow(QWidget* parent)
     connect(controller_, &SimulationController::runningChanged, this, [this](bool running) {
         playAction_->setText(running ? tr("Pause") : tr("Play"));
         playAction_->setIcon(style()->standardIcon(running ? QStyle::SP_MediaPause : QStyle::SP_MediaPlay));
+        if (running) statusBar()->clearMessage(); // "Run complete" and the like belong to the run before
     });
     connect(document_, &ExperimentDocument::changed, this, &MainWindow::documentChanged);
     const auto showMessage = [this](const QString& message) { statusBar()->showMessage(message, 6000); };

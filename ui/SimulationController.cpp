@@ -8,6 +8,7 @@
 #include "ImportedRunModel.h"
 #include "ViewChooser.h"
 #include "catalog/ModelCatalog.h"
+#include "i18n/Translations.h"
 #include "viewport/QtGlContext.h"
 
 #include <algorithm>
@@ -59,7 +60,7 @@ void SimulationController::adopt(std::unique_ptr<Model> model) {
     model_ = std::move(model);
     importedFrom_.clear();
     if (const std::string warning = model_->accuracyWarning(); !warning.empty())
-        emit notice(tr("Warning: %1").arg(QString::fromStdString(warning)));
+        emit notice(tr("Warning: %1").arg(coreSentence(warning)));
     pending_.clear();
     applied_ = model_->params();
     // The pace belongs to the scene: a new one starts automatic and forward, whatever the last one ran at.

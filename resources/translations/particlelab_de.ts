@@ -1713,6 +1713,10 @@ Wirkt nach „Zurücksetzen“.</translation>
         <source>the whole domain: %1 molecules (free stream, shock layer and wake together)</source>
         <translation>das ganze Gebiet: %1 Moleküle (Anströmung, Stoßschicht und Nachlauf zusammen)</translation>
     </message>
+    <message>
+        <source>cells are %1 free-stream mean free paths wide (λ = %2 m), above λ/%3: use cells_x ≥ %4 and cells_y ≥ %5</source>
+        <translation>die Zellen sind %1 freie Weglängen der Anströmung breit (λ = %2 m), mehr als λ/%3: cells_x ≥ %4 und cells_y ≥ %5 wählen</translation>
+    </message>
 </context>
 <context>
     <name>pl::ui::AppRecorder</name>

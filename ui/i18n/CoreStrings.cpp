@@ -96,6 +96,8 @@ std::vector<std::string> coreDisplayStrings() {
     // freshly reset model shows them.
     for (const BuiltinPreset& builtin : builtinPresets()) {
         const auto model = instantiate(builtin.preset);
+        if (const std::string warning = model->accuracyWarning(); !warning.empty())
+            add(sentenceTemplate(warning).text);
         const SceneView view = model->sceneView();
         for (const std::string* text : {&view.xLabel, &view.yLabel, &view.colourLabel, &view.hint})
             add(*text);

@@ -118,15 +118,37 @@ void fitTickCounts(QCPAxisRect* rect) {
     x->ticker()->setTickCount(std::clamp(columns, 2, kMostTicks));
 }
 
-// A title (or a line of it) wider than the plot is set smaller, then shortened.
+// A line wider than the plot breaks in two at the ", " or " (" nearest its middle (a summary such as
+// "the whole domain: 52711 molecules (free stream, shock layer and wake together)").
+QStringList wrapped(const QStringList& lines, const QFontMetricsF& metrics, double width) {
+    QStringList out;
+    for (const QString& line : lines) {
+        qsizetype best = -1;
+        if (metrics.horizontalAdvance(line) > width)
+            for (const QString& separator : {QStringLiteral(", "), QStringLiteral(" (")})
+                for (qsizetype at = line.indexOf(separator); at > 0; at = line.indexOf(separator, at + 1))
+                    if (best < 0 || std::abs(at - line.size() / 2) < std::abs(best - line.size() / 2))
+                        best = at;
+        if (best < 0) {
+            out << line;
+            continue;
+        }
+        const qsizetype cut = line[best] == QLatin1Char(',') ? best + 1 : best;
+        out << line.left(cut) << line.mid(cut).trimmed();
+    }
+    return out;
+}
+
+// A title (or a line of it) wider than the plot is wrapped, then set smaller, then shortened.
 void fitTitle(QCPTextElement* title, double width) {
     if (title->property("pl_shownText").toString() != title->text() ||
         title->property("pl_shownFont").value<QFont>() != title->font()) {
         title->setProperty("pl_fullText", title->text());
         title->setProperty("pl_baseFont", title->font());
     }
-    const QStringList lines = title->property("pl_fullText").toString().split('\n');
     const QFont base = title->property("pl_baseFont").value<QFont>();
+    const QStringList lines =
+        wrapped(title->property("pl_fullText").toString().split('\n'), QFontMetricsF(base), width);
     double widest = 0;
     for (const QString& line : lines) widest = std::max(widest, QFontMetricsF(base).horizontalAdvance(line));
     QFont font = base;

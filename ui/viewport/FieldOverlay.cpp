@@ -128,8 +128,9 @@ void paintFieldLegend(QPainter& painter, const ViewTransform& transform, const S
     const QRectF labels(bar.left(), bar.bottom() + 0.1 * line, bar.width(), line);
     painter.drawText(labels, Qt::AlignLeft | Qt::AlignVCenter, lowest);
     painter.drawText(labels, Qt::AlignRight | Qt::AlignVCenter, highest);
-    painter.drawText(labels.translated(0, line), Qt::AlignHCenter | Qt::AlignVCenter,
-                     metrics.elidedText(averaged, Qt::ElideRight, labels.width()));
+    if (steps > 0) // before the window opens the scene's hint says so
+        painter.drawText(labels.translated(0, line), Qt::AlignHCenter | Qt::AlignVCenter,
+                         metrics.elidedText(averaged, Qt::ElideRight, labels.width()));
 }
 } // namespace
 

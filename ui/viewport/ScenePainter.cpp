@@ -77,7 +77,11 @@ void paintSceneBodies(QPainter& painter, const ViewTransform& transform, const S
         painter.save();
         painter.setFont(font);
         painter.setPen(QColor(255, 255, 255, 51));
-        painter.drawText(box, Qt::AlignCenter | Qt::TextWordWrap, coreText(scene.hint));
+        // A thin box (the shock tube) has no room for it: the view's whole area has.
+        const QRectF room = box.height() < 4 * painter.fontMetrics().height()
+                                ? QRectF(QPointF(0, 0), QSizeF(transform.size()))
+                                : box;
+        painter.drawText(room, Qt::AlignCenter | Qt::TextWordWrap, coreText(scene.hint));
         painter.restore();
     }
     painter.save();
