@@ -9,8 +9,10 @@
 
 #include <QTemporaryDir>
 #include <QtTest>
+
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <set>
 
 using namespace pl;
 
@@ -106,11 +108,18 @@ private slots:
         // saved preset's is the user's and stays.
         if (stem.startsWith("user-")) QCOMPARE(old.description, twin.description);
         QCOMPARE(old.seed, twin.seed);
-        QVERIFY2(firstDifference(old.params, twin.params).empty(),
-                 firstDifference(old.params, twin.params).c_str());
+        // Parameters a built-in gained after the file was written: the old file keeps the default it
+        // always had (the shock tube's moving sampling window came after schema 2).
+        const std::set<std::pair<std::string, std::string>> gainedSince{
+            {"tunnel-shock-tube", "sample_window"}};
+        Preset loaded = old, current = twin;
+        for (const auto& [name, key] : gainedSince)
+            if (name == stem.toStdString()) loaded.params.erase(key), current.params.erase(key);
+        QVERIFY2(firstDifference(loaded.params, current.params).empty(),
+                 firstDifference(loaded.params, current.params).c_str());
         QVERIFY(sameObstacles(old.obstacles, twin.obstacles));
         // The models they make hold the same parameters, defaults included.
-        const auto a = instantiate(old), b = instantiate(twin);
+        const auto a = instantiate(loaded), b = instantiate(current);
         QVERIFY2(firstDifference(a->params(), b->params()).empty(),
                  firstDifference(a->params(), b->params()).c_str());
     }
