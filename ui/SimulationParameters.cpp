@@ -4,6 +4,7 @@
 #include "SimulationController.h"
 
 #include "ViewChooser.h"
+#include "i18n/Translations.h"
 
 namespace pl::ui {
 
@@ -24,12 +25,8 @@ QString SimulationController::setParameters(const ParamValues& values) {
     for (const auto& [key, value] : values) checked[key] = value;
     try {
         model_->setParams(checked);
-    } catch (const ParamError& e) { // in the panel's words: each parameter by its label
-        const auto& specs = model_->paramSpecs();
-        return QString::fromStdString(nameParameters(e.message(), [&specs](const std::string& key) {
-            const ParamSpec* spec = findSpec(specs, key);
-            return spec ? spec->label : key;
-        }));
+    } catch (const ParamError& e) { // in the panel's words and language: each parameter by its label
+        return coreRefusal(e.message(), model_->paramSpecs());
     } catch (const std::exception& e) {
         return QString::fromStdString(e.what());
     }
@@ -81,6 +78,9 @@ void SimulationController::reset() {
     try {
         model_->setParams(buildWith);
         model_->reset();
+    } catch (const ParamError& e) {
+        emit notice(tr("Cannot reset: %1").arg(coreRefusal(e.message(), model_->paramSpecs())));
+        return;
     } catch (const std::exception& e) {
         emit notice(tr("Cannot reset: %1").arg(QString::fromStdString(e.what())));
         return;

@@ -36,9 +36,20 @@ double roomUnder(int resource, double used) {
     return std::max(0.0, static_cast<double>(limit.rlim_cur) - (std::isnan(used) ? 0.0 : used));
 }
 
+double assumedBytes = std::numeric_limits<double>::quiet_NaN(); // NaN: ask the machine
+
 } // namespace
 
+AssumedMemory::AssumedMemory(double bytes) {
+    assumedBytes = bytes;
+}
+
+AssumedMemory::~AssumedMemory() {
+    assumedBytes = std::numeric_limits<double>::quiet_NaN();
+}
+
 double availableMemoryBytes() {
+    if (!std::isnan(assumedBytes)) return assumedBytes;
     double available = procKilobytes("/proc/meminfo", "MemAvailable");
     if (std::isnan(available)) // not Linux, or a kernel before 3.14: the physical memory
         available = static_cast<double>(sysconf(_SC_PHYS_PAGES)) * static_cast<double>(sysconf(_SC_PAGESIZE));

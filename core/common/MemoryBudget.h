@@ -21,6 +21,17 @@ struct MemoryNeed {
 // RLIMIT_DATA) above what it maps already.
 double availableMemoryBytes();
 
+// While one lives, availableMemoryBytes() answers `bytes` instead of asking the machine: what a refusal
+// says then depends on its input alone (the catalogue of the UI's translated sentences is made under
+// one, so it is the same on every machine). Not nested, not across threads.
+class AssumedMemory {
+public:
+    explicit AssumedMemory(double bytes);
+    ~AssumedMemory();
+    AssumedMemory(const AssumedMemory&) = delete;
+    AssumedMemory& operator=(const AssumedMemory&) = delete;
+};
+
 // Throws ParamError(need.key) when need.bytes is more than availableMemoryBytes() allows, naming both and
 // the fix. The share of the available memory a run may plan for leaves room for the program itself,
 // the plots and the outputs.

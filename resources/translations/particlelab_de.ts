@@ -1717,6 +1717,241 @@ Wirkt nach „Zurücksetzen“.</translation>
         <source>cells are %1 free-stream mean free paths wide (λ = %2 m), above λ/%3: use cells_x ≥ %4 and cells_y ≥ %5</source>
         <translation>die Zellen sind %1 freie Weglängen der Anströmung breit (λ = %2 m), mehr als λ/%3: cells_x ≥ %4 und cells_y ≥ %5 wählen</translation>
     </message>
+    <message>
+        <source>%1 particles exceed the limit of %2</source>
+        <translation>%1 Teilchen überschreiten die Grenze von %2</translation>
+    </message>
+    <message>
+        <source>a DSMC cell needs at least %1 particles to collide ({1} + {2} = %2)</source>
+        <translation>eine DSMC-Zelle braucht mindestens %1 Teilchen für Stöße ({1} + {2} = %2)</translation>
+    </message>
+    <message>
+        <source>the BKW solution is for %1 velocity components; use %2, or another initial state</source>
+        <translation>die BKW-Lösung gilt für %1 Geschwindigkeitskomponenten; %2 verwenden oder einen anderen Anfangszustand</translation>
+    </message>
+    <message>
+        <source>the disks cover %1 % of the %2 × %3 box; at most %4 % fits (fewer or smaller disks, or a larger box)</source>
+        <translation>die Scheiben bedecken %1 % der %2 × %3 großen Box; höchstens %4 % passen (weniger oder kleinere Scheiben oder eine größere Box)</translation>
+    </message>
+    <message>
+        <source>the free stream collides %1 times per molecule and step, more than a step can do (%2); use {1} ≤ %3 s</source>
+        <translation>die Anströmung stößt %1-mal je Molekül und Schritt, mehr als ein Schritt leisten kann (%2); {1} ≤ %3 s verwenden</translation>
+    </message>
+    <message>
+        <source>the free stream fills the domain with %1 molecules, more than the %2 this machine&apos;s memory holds now; raise {1} to at least %3</source>
+        <translation>die Anströmung füllt das Gebiet mit %1 Molekülen, mehr als die %2, die der Speicher dieses Rechners jetzt fasst; {1} auf mindestens %3 erhöhen</translation>
+    </message>
+    <message>
+        <source>the free stream fills the domain with %1 molecules, more than the limit of %2; raise {1} to at least %3</source>
+        <translation>die Anströmung füllt das Gebiet mit %1 Molekülen, mehr als die Grenze von %2; {1} auf mindestens %3 erhöhen</translation>
+    </message>
+    <message>
+        <source>the initial block holds %1 particles, more than {1} = %2</source>
+        <translation>der Anfangsblock enthält %1 Teilchen, mehr als {1} = %2</translation>
+    </message>
+    <message>
+        <source>the initial block must lie inside the box [%1, %2] × [%3, %4]</source>
+        <translation>der Anfangsblock muss in der Box [%1; %2] × [%3; %4] liegen</translation>
+    </message>
+    <message>
+        <source>the piston replaces the left side, which is periodic; make {1} and {2} non-periodic or switch {3} off</source>
+        <translation>der Kolben ersetzt die linke Seite, die periodisch ist; {1} und {2} nicht periodisch machen oder {3} ausschalten</translation>
+    </message>
+    <message>
+        <source>{1} + {2} = %1 exceeds {3} = %2</source>
+        <translation>{1} + {2} = %1 übersteigt {3} = %2</translation>
+    </message>
+    <message>
+        <source>{1} = %1 is too large for the %2 × %3 box: it needs at least %4 h across</source>
+        <translation>{1} = %1 ist zu groß für die %2 × %3 große Box: sie braucht mindestens %4 h Breite</translation>
+    </message>
+    <message>
+        <source>{1} = %1 is too large: a particle does not fit in the %2 × %3 box</source>
+        <translation>{1} = %1 ist zu groß: ein Teilchen passt nicht in die %2 × %3 große Box</translation>
+    </message>
+    <message>
+        <source>{1} and {2} must both be periodic or neither</source>
+        <translation>{1} und {2} müssen beide periodisch sein oder keiner</translation>
+    </message>
+    <message>
+        <source>{1} is out of range: %1 (allowed: [%2, %3] K)</source>
+        <translation>{1} liegt außerhalb des Bereichs: %1 (erlaubt: [%2; %3] K)</translation>
+    </message>
+    <message>
+        <source>{1} is out of range: %1 (allowed: [%2, %3] L)</source>
+        <translation>{1} liegt außerhalb des Bereichs: %1 (erlaubt: [%2; %3] L)</translation>
+    </message>
+    <message>
+        <source>{1} is out of range: %1 (allowed: [%2, %3] L/T)</source>
+        <translation>{1} liegt außerhalb des Bereichs: %1 (erlaubt: [%2; %3] L/T)</translation>
+    </message>
+    <message>
+        <source>{1} is out of range: %1 (allowed: [%2, %3] L/T²)</source>
+        <translation>{1} liegt außerhalb des Bereichs: %1 (erlaubt: [%2; %3] L/T²)</translation>
+    </message>
+    <message>
+        <source>{1} is out of range: %1 (allowed: [%2, %3] L/s)</source>
+        <translation>{1} liegt außerhalb des Bereichs: %1 (erlaubt: [%2; %3] L/s)</translation>
+    </message>
+    <message>
+        <source>{1} is out of range: %1 (allowed: [%2, %3] L/s²)</source>
+        <translation>{1} liegt außerhalb des Bereichs: %1 (erlaubt: [%2; %3] L/s²)</translation>
+    </message>
+    <message>
+        <source>{1} is out of range: %1 (allowed: [%2, %3] M)</source>
+        <translation>{1} liegt außerhalb des Bereichs: %1 (erlaubt: [%2; %3] M)</translation>
+    </message>
+    <message>
+        <source>{1} is out of range: %1 (allowed: [%2, %3] M/T²)</source>
+        <translation>{1} liegt außerhalb des Bereichs: %1 (erlaubt: [%2; %3] M/T²)</translation>
+    </message>
+    <message>
+        <source>{1} is out of range: %1 (allowed: [%2, %3] M·L²/T²)</source>
+        <translation>{1} liegt außerhalb des Bereichs: %1 (erlaubt: [%2; %3] M·L²/T²)</translation>
+    </message>
+    <message>
+        <source>{1} is out of range: %1 (allowed: [%2, %3] T)</source>
+        <translation>{1} liegt außerhalb des Bereichs: %1 (erlaubt: [%2; %3] T)</translation>
+    </message>
+    <message>
+        <source>{1} is out of range: %1 (allowed: [%2, %3] d)</source>
+        <translation>{1} liegt außerhalb des Bereichs: %1 (erlaubt: [%2; %3] d)</translation>
+    </message>
+    <message>
+        <source>{1} is out of range: %1 (allowed: [%2, %3] except %4 T)</source>
+        <translation>{1} liegt außerhalb des Bereichs: %1 (erlaubt: [%2; %3] außer %4 T)</translation>
+    </message>
+    <message>
+        <source>{1} is out of range: %1 (allowed: [%2, %3] m)</source>
+        <translation>{1} liegt außerhalb des Bereichs: %1 (erlaubt: [%2; %3] m)</translation>
+    </message>
+    <message>
+        <source>{1} is out of range: %1 (allowed: [%2, %3] m/s)</source>
+        <translation>{1} liegt außerhalb des Bereichs: %1 (erlaubt: [%2; %3] m/s)</translation>
+    </message>
+    <message>
+        <source>{1} is out of range: %1 (allowed: [%2, %3] m³)</source>
+        <translation>{1} liegt außerhalb des Bereichs: %1 (erlaubt: [%2; %3] m³)</translation>
+    </message>
+    <message>
+        <source>{1} is out of range: %1 (allowed: [%2, %3] m³/s)</source>
+        <translation>{1} liegt außerhalb des Bereichs: %1 (erlaubt: [%2; %3] m³/s)</translation>
+    </message>
+    <message>
+        <source>{1} is out of range: %1 (allowed: [%2, %3] m⁻³)</source>
+        <translation>{1} liegt außerhalb des Bereichs: %1 (erlaubt: [%2; %3] m⁻³)</translation>
+    </message>
+    <message>
+        <source>{1} is out of range: %1 (allowed: [%2, %3] s)</source>
+        <translation>{1} liegt außerhalb des Bereichs: %1 (erlaubt: [%2; %3] s)</translation>
+    </message>
+    <message>
+        <source>{1} is out of range: %1 (allowed: [%2, %3] steps)</source>
+        <translation>{1} liegt außerhalb des Bereichs: %1 (erlaubt: [%2; %3] Schritte)</translation>
+    </message>
+    <message>
+        <source>{1} is out of range: %1 (allowed: [%2, %3] u)</source>
+        <translation>{1} liegt außerhalb des Bereichs: %1 (erlaubt: [%2; %3] u)</translation>
+    </message>
+    <message>
+        <source>{1} is out of range: %1 (allowed: [%2, %3] × rms speed)</source>
+        <translation>{1} liegt außerhalb des Bereichs: %1 (erlaubt: [%2; %3] × rms-Geschwindigkeit)</translation>
+    </message>
+    <message>
+        <source>{1} is out of range: %1 (allowed: [%2, %3] × √(g H))</source>
+        <translation>{1} liegt außerhalb des Bereichs: %1 (erlaubt: [%2; %3] × √(g H))</translation>
+    </message>
+    <message>
+        <source>{1} is out of range: %1 (allowed: [%2, %3])</source>
+        <translation>{1} liegt außerhalb des Bereichs: %1 (erlaubt: [%2; %3])</translation>
+    </message>
+    <message>
+        <source>{1} lets the run hold about %1 GiB of memory, more than the %2 GiB this machine can give it now; use {2} ≤ %3</source>
+        <translation>mit {1} braucht der Lauf etwa %1 GiB Speicher, mehr als die %2 GiB, die dieser Rechner ihm jetzt geben kann; {2} ≤ %3 verwenden</translation>
+    </message>
+    <message>
+        <source>{1} lets the run hold about %1 GiB of memory, more than the %2 MiB this machine can give it now; use at most %3 particles ({2} + {3})</source>
+        <translation>mit {1} braucht der Lauf etwa %1 GiB Speicher, mehr als die %2 MiB, die dieser Rechner ihm jetzt geben kann; höchstens %3 Teilchen verwenden ({2} + {3})</translation>
+    </message>
+    <message>
+        <source>{1} lets the run hold about %1 GiB of memory, more than the %2 MiB this machine can give it now; use {2} ≤ %3</source>
+        <translation>mit {1} braucht der Lauf etwa %1 GiB Speicher, mehr als die %2 MiB, die dieser Rechner ihm jetzt geben kann; {2} ≤ %3 verwenden</translation>
+    </message>
+    <message>
+        <source>{1} lets the run hold about %1 MiB of memory, more than the %2 MiB this machine can give it now; use at most %3 cells ({2} × {3})</source>
+        <translation>mit {1} braucht der Lauf etwa %1 MiB Speicher, mehr als die %2 MiB, die dieser Rechner ihm jetzt geben kann; höchstens %3 Zellen verwenden ({2} × {3})</translation>
+    </message>
+    <message>
+        <source>{1} must be an integer, got %1 (allowed: [%2, %3] steps)</source>
+        <translation>{1} muss eine ganze Zahl sein, nicht %1 (erlaubt: [%2; %3] Schritte)</translation>
+    </message>
+    <message>
+        <source>{1} must be an integer, got %1 (allowed: [%2, %3])</source>
+        <translation>{1} muss eine ganze Zahl sein, nicht %1 (erlaubt: [%2; %3])</translation>
+    </message>
+    <message>
+        <source>{1} must not be %1 (allowed: [%2, %3] except %4 T)</source>
+        <translation>{1} darf nicht %1 sein (erlaubt: [%2; %3] außer %4 T)</translation>
+    </message>
+    <message>
+        <source>{1} × {2} = %1 cells exceed the limit of %2</source>
+        <translation>{1} × {2} = %1 Zellen überschreiten die Grenze von %2</translation>
+    </message>
+    <message>
+        <source>ν Δt = %1 collisions per particle and step (%2 candidate pairs a step) is more than the %3 a step can do in reasonable time; use {1} ≤ %4 s (now %5) or {2} ≤ %6 (now %7) to keep it below Bird&apos;s guideline of %8</source>
+        <translation>ν Δt = %1 Stöße je Teilchen und Schritt (%2 Kandidatenpaare je Schritt) sind mehr als die %3, die ein Schritt in vertretbarer Zeit schafft; {1} ≤ %4 s (jetzt %5) oder {2} ≤ %6 (jetzt %7) verwenden, um unter Birds Richtwert von %8 zu bleiben</translation>
+    </message>
+    <message>
+        <source>{1} lets the run hold about %1 GiB of memory, more than the %2 KiB this machine can give it now; use at most %3 disks ({2} + {3}, and {4})</source>
+        <translation>mit {1} braucht der Lauf etwa %1 GiB Speicher, mehr als die %2 KiB, die dieser Rechner ihm jetzt geben kann; höchstens %3 Scheiben verwenden ({2} + {3}, und {4})</translation>
+    </message>
+    <message>
+        <source>{1} lets the run hold about %1 GiB of memory, more than the %2 KiB this machine can give it now; use at most %3 particles ({2} + {3})</source>
+        <translation>mit {1} braucht der Lauf etwa %1 GiB Speicher, mehr als die %2 KiB, die dieser Rechner ihm jetzt geben kann; höchstens %3 Teilchen verwenden ({2} + {3})</translation>
+    </message>
+    <message>
+        <source>{1} lets the run hold about %1 GiB of memory, more than the %2 KiB this machine can give it now; use {2} ≤ %3</source>
+        <translation>mit {1} braucht der Lauf etwa %1 GiB Speicher, mehr als die %2 KiB, die dieser Rechner ihm jetzt geben kann; {2} ≤ %3 verwenden</translation>
+    </message>
+    <message>
+        <source>{1} lets the run hold about %1 KiB of memory, more than the %2 KiB this machine can give it now; use at most %3 cells ({2} × {3})</source>
+        <translation>mit {1} braucht der Lauf etwa %1 KiB Speicher, mehr als die %2 KiB, die dieser Rechner ihm jetzt geben kann; höchstens %3 Zellen verwenden ({2} × {3})</translation>
+    </message>
+    <message>
+        <source>{1} lets the run hold about %1 KiB of memory, more than the %2 KiB this machine can give it now; use at most %3 particles ({2} + {3})</source>
+        <translation>mit {1} braucht der Lauf etwa %1 KiB Speicher, mehr als die %2 KiB, die dieser Rechner ihm jetzt geben kann; höchstens %3 Teilchen verwenden ({2} + {3})</translation>
+    </message>
+    <message>
+        <source>{1} lets the run hold about %1 MiB of memory, more than the %2 KiB this machine can give it now; use at most %3 cells ({2} × {3})</source>
+        <translation>mit {1} braucht der Lauf etwa %1 MiB Speicher, mehr als die %2 KiB, die dieser Rechner ihm jetzt geben kann; höchstens %3 Zellen verwenden ({2} × {3})</translation>
+    </message>
+    <message>
+        <source>{1} lets the run hold about %1 MiB of memory, more than the %2 KiB this machine can give it now; use at most %3 disks ({2} + {3}, and {4})</source>
+        <translation>mit {1} braucht der Lauf etwa %1 MiB Speicher, mehr als die %2 KiB, die dieser Rechner ihm jetzt geben kann; höchstens %3 Scheiben verwenden ({2} + {3}, und {4})</translation>
+    </message>
+    <message>
+        <source>{1} lets the run hold about %1 MiB of memory, more than the %2 KiB this machine can give it now; use {2} ≤ %3</source>
+        <translation>mit {1} braucht der Lauf etwa %1 MiB Speicher, mehr als die %2 KiB, die dieser Rechner ihm jetzt geben kann; {2} ≤ %3 verwenden</translation>
+    </message>
+    <message>
+        <source>{1} lets the run hold about %1 MiB of memory, more than the %2 MiB this machine can give it now; use {2} ≤ %3</source>
+        <translation>mit {1} braucht der Lauf etwa %1 MiB Speicher, mehr als die %2 MiB, die dieser Rechner ihm jetzt geben kann; {2} ≤ %3 verwenden</translation>
+    </message>
+</context>
+<context>
+    <name>pl::ui::Allowed</name>
+    <message>
+        <source>%1 except 0</source>
+        <translation>%1 außer 0</translation>
+    </message>
+    <message>
+        <source>true or false</source>
+        <translation>wahr oder falsch</translation>
+    </message>
+    <message>
+        <source>one of: %1</source>
+        <translation>eins von: %1</translation>
+    </message>
 </context>
 <context>
     <name>pl::ui::AppRecorder</name>

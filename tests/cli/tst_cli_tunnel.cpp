@@ -266,7 +266,10 @@ private slots:
         const qint64 ms = stopping.elapsed();
         const QString err = QString::fromUtf8(p.readAllStandardError());
         QCOMPARE(p.exitCode(), 130);
-        QVERIFY2(ms < 1000, qPrintable(QString("the run took %1 ms to stop").arg(ms)));
+        // The second is the release build's promise; under .ci/sanitize.sh every memory access is checked,
+        // which makes undoing the step (copying the 2.4 M molecules back) about three times slower.
+        const qint64 bound = qEnvironmentVariableIsSet("ASAN_OPTIONS") ? 3000 : 1000;
+        QVERIFY2(ms < bound, qPrintable(QString("the run took %1 ms to stop").arg(ms)));
         QVERIFY2(err.contains("stopped by SIGINT at step 0") && err.contains("the 1 row sampled"),
                  qPrintable(err));
         QCOMPARE(readLines(series).size(), 2);

@@ -5,6 +5,7 @@
 #include "MainWindow.h"
 #include "PreferencesDialog.h"
 #include "SimulationController.h"
+#include "UiTestSupport.h"
 #include "i18n/CoreSentences.h"
 #include "i18n/CoreStrings.h"
 #include "i18n/Translations.h"
@@ -168,6 +169,9 @@ private slots:
         const ui::SentenceTemplate pattern = ui::sentenceTemplate("u_x = -1.138e-14 m/s, 2d, M4: 3 each.");
         QCOMPARE(QString::fromStdString(pattern.text), QStringLiteral("u_x = %1 m/s, 2d, M4: %2 each."));
         QCOMPARE(pattern.numbers, (std::vector<std::string>{"-1.138e-14", "3"}));
+        const ui::SentenceTemplate refusal = ui::sentenceTemplate("'{fill_x1}' = 2 exceeds {count_b}");
+        QCOMPARE(QString::fromStdString(refusal.text), QStringLiteral("{1} = %1 exceeds {2}"));
+        QCOMPARE(refusal.keys, (std::vector<std::string>{"fill_x1", "count_b"}));
         QVERIFY(ui::installLanguage("de"));
         QCOMPARE(ui::coreSentence("kT = 0.52, KS distance 0.0123"),
                  QStringLiteral("kT = 0,52, KS-Abstand 0,0123"));
@@ -184,6 +188,36 @@ private slots:
         emit integrator->activated(integrator->currentIndex());
         QCOMPARE(std::get<std::string>(window.controller()->parameterValues().at("integrator")),
                  std::string("rk4"));
+        window.document()->setModified(false);
+        QVERIFY(ui::installLanguage("en"));
+    }
+
+    // A value the model refuses is explained in German: the sentence's template translated, each
+    // parameter by its German label, numbers with the decimal comma, ranges separated by a semicolon.
+    void refusalsInThePanelAreGerman() {
+        QVERIFY(ui::installLanguage("de"));
+        ui::MainWindow window;
+        QVERIFY(window.document()->open("gas-classroom", true));
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        ui::ParameterPanel* panel = window.parameters();
+        QVERIFY2(panel->editor("dt")->toolTip().contains("Erlaubt: [-1; 1] außer 0 T"),
+                 qPrintable(panel->editor("dt")->toolTip()));
+        test::typeInto(panel->editor("dt"), "10,5");
+        const QString range = panel->problem("dt");
+        QVERIFY2(range.startsWith("Zeitschritt liegt außerhalb des Bereichs: 10,5 (erlaubt: [") &&
+                     range.endsWith("(erlaubt: [-1; 1] außer 0 T)"),
+                 qPrintable(range));
+        // The field's own message writes the allowed values the same way as its tooltip.
+        test::typeInto(panel->editor("dt"), "zehn");
+        QCOMPARE(panel->problem("dt"),
+                 QStringLiteral("Zeitschritt: „zehn“ ist keine Zahl (erlaubt: [-1; 1] außer 0 T)"));
+        const double cap = std::get<double>(window.controller()->model()->params().at("max_particles"));
+        test::typeInto(panel->editor("count_a"), QString::number(static_cast<qint64>(cap) + 1));
+        const QString across = panel->problem("count_a");
+        QVERIFY2(across.startsWith("Scheiben (A) + Scheiben (B) = ") && across.contains(" übersteigt ") &&
+                     across.contains("Teilchenobergrenze = "),
+                 qPrintable(across));
         window.document()->setModified(false);
         QVERIFY(ui::installLanguage("en"));
     }

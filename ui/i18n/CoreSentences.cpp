@@ -40,18 +40,35 @@ std::size_t numberAt(const std::string& s, std::size_t at) {
     return i - at;
 }
 
+// The length of the parameter mark "{key}" starting at `at`, or 0 when none starts there.
+std::size_t markAt(const std::string& s, std::size_t at) {
+    if (s[at] != '{') return 0;
+    std::size_t i = at + 1;
+    while (i < s.size() && (std::isalnum(static_cast<unsigned char>(s[i])) != 0 || s[i] == '_')) ++i;
+    return i > at + 1 && i < s.size() && s[i] == '}' ? i + 1 - at : 0;
+}
+
 } // namespace
 
 SentenceTemplate sentenceTemplate(const std::string& sentence) {
     SentenceTemplate out;
     for (std::size_t i = 0; i < sentence.size();) {
+        if (const std::size_t mark = markAt(sentence, i); mark > 0) {
+            out.keys.push_back(sentence.substr(i + 1, mark - 2));
+            const bool quoted = !out.text.empty() && out.text.back() == '\'' && i + mark < sentence.size() &&
+                                sentence[i + mark] == '\'';
+            if (quoted) out.text.pop_back();
+            out.text.append(1, '{').append(std::to_string(out.keys.size())).append(1, '}');
+            i += mark + (quoted ? 1 : 0);
+            continue;
+        }
         const std::size_t length = numberAt(sentence, i);
         if (length == 0) {
             out.text += sentence[i++];
             continue;
         }
         out.numbers.push_back(sentence.substr(i, length));
-        out.text += "%" + std::to_string(out.numbers.size());
+        out.text.append(1, '%').append(std::to_string(out.numbers.size()));
         i += length;
     }
     return out;

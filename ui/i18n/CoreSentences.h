@@ -10,12 +10,15 @@
 namespace pl::ui {
 
 struct SentenceTemplate {
-    std::string text;                 // the sentence with %1, %2, … for its numbers
+    std::string text;                 // the sentence with %1, %2, … for its numbers, {1}, {2}, … for keys
     std::vector<std::string> numbers; // as written: "-1.138e-14", "32000"
+    std::vector<std::string> keys;    // the parameters a refusal names: "dt", "count_a"
 };
 
 // The numbers are free-standing decimals: an optional sign, digits, an optional fraction and exponent,
-// not part of a name ("u_x", "M4", "2d" stay text).
+// not part of a name ("u_x", "M4", "2d" stay text). A parameter marked {key} or '{key}' (ParamSpec.h)
+// becomes {1}, {2}, … without quotes, so that one template serves every parameter and the UI writes
+// each by its translated label.
 SentenceTemplate sentenceTemplate(const std::string& sentence);
 
 } // namespace pl::ui

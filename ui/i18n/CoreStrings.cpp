@@ -2,6 +2,7 @@
 // lupdate links only particlelab_core.
 #include "CoreStrings.h"
 
+#include "CoreRefusals.h"
 #include "CoreSentences.h"
 
 #include "catalog/ModelCatalog.h"
@@ -122,6 +123,8 @@ std::vector<std::string> coreDisplayStrings() {
                 }
         }
     }
+    // The panel's refusals of parameter values.
+    for (const std::string& refusal : refusalTemplates()) add(refusal);
     return {texts.begin(), texts.end()};
 }
 

@@ -10,7 +10,9 @@
 #include <QLibraryInfo>
 #include <QLocale>
 #include <QSettings>
+#include <QStringList>
 #include <QTranslator>
+#include <functional>
 #include <memory>
 
 namespace pl::ui {
@@ -88,14 +90,63 @@ QString coreText(const std::string& text) {
     return QCoreApplication::translate(kCoreContext, text.c_str());
 }
 
-QString coreSentence(const std::string& sentence) {
-    const SentenceTemplate pattern = sentenceTemplate(sentence);
-    if (pattern.numbers.empty()) return coreText(sentence);
+namespace {
+
+// The template's translation with its numbers in the language's decimal mark and each key as nameOf
+// writes it.
+QString filledTemplate(const SentenceTemplate& pattern,
+                       const std::function<QString(const std::string&)>& nameOf) {
     QString text = coreText(pattern.text);
     const QLocale locale;
     for (const std::string& number : pattern.numbers)
         text = text.arg(QString::fromStdString(number).replace(QLatin1Char('.'), locale.decimalPoint()));
+    for (std::size_t k = 0; k < pattern.keys.size(); ++k)
+        text.replace(QStringLiteral("{%1}").arg(k + 1), nameOf(pattern.keys[k]));
     return text;
+}
+
+} // namespace
+
+QString coreSentence(const std::string& sentence) {
+    const SentenceTemplate pattern = sentenceTemplate(sentence);
+    if (pattern.numbers.empty() && pattern.keys.empty()) return coreText(sentence);
+    return filledTemplate(pattern, [](const std::string& key) { return QString::fromStdString(key); });
+}
+
+QString coreRefusal(const std::string& message, const std::vector<ParamSpec>& specs) {
+    return filledTemplate(sentenceTemplate(message), [&specs](const std::string& key) {
+        const ParamSpec* spec = findSpec(specs, key);
+        return spec ? translatedLabel(*spec) : QString::fromStdString(key);
+    });
+}
+
+QString translatedAllowed(const ParamSpec& spec) {
+    QLocale locale;
+    locale.setNumberOptions(QLocale::OmitGroupSeparator); // bounds as typed: "100000"
+    switch (spec.kind) {
+    case ParamKind::Real:
+    case ParamKind::Integer: {
+        // A language that writes a decimal comma separates the bounds with a semicolon.
+        const QString separator =
+            locale.decimalPoint() == QStringLiteral(",") ? QStringLiteral("; ") : QStringLiteral(", ");
+        const auto bound = [&locale](double v) { return locale.toString(v, 'g', 12); };
+        QString range = QStringLiteral("[%1%2%3]").arg(bound(spec.min), separator, bound(spec.max));
+        if (spec.nonZero) range = QCoreApplication::translate("pl::ui::Allowed", "%1 except 0").arg(range);
+        if (!spec.unit.empty()) range += QStringLiteral(" ") + translatedUnit(spec);
+        return range;
+    }
+    case ParamKind::Boolean:
+        return QCoreApplication::translate("pl::ui::Allowed", "true or false");
+    case ParamKind::Color:
+        return QStringLiteral("\"#rrggbb\"");
+    case ParamKind::Choice: {
+        QStringList choices;
+        for (const std::string& choice : spec.choices) choices << coreText(choice);
+        return QCoreApplication::translate("pl::ui::Allowed", "one of: %1")
+            .arg(choices.join(QStringLiteral(", ")));
+    }
+    }
+    return {};
 }
 
 QString translatedLabel(const ParamSpec& spec) {

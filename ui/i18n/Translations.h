@@ -5,6 +5,7 @@
 #include <QList>
 #include <QString>
 #include <string>
+#include <vector>
 
 namespace pl {
 struct ParamSpec;
@@ -37,6 +38,12 @@ QString coreText(const std::string& text);
 // A core sentence with numbers ("kT = 0.52, KS distance 0.012"): its template (CoreSentences.h) in the
 // installed language, the numbers written with the language's decimal mark.
 QString coreSentence(const std::string& sentence);
+// A model's refusal of parameter values (ParamError::message(), its parameters marked {key}): its
+// template in the installed language, each parameter named by its translated label from specs.
+QString coreRefusal(const std::string& message, const std::vector<ParamSpec>& specs);
+// The values a parameter allows, in the installed language: its bounds with the language's numbers and
+// its unit, or its choices.
+QString translatedAllowed(const ParamSpec& spec);
 QString translatedLabel(const ParamSpec& spec);
 QString translatedUnit(const ParamSpec& spec);
 QString translatedGroup(const ParamSpec& spec);

@@ -27,7 +27,7 @@ namespace {
 
 QString tooltipFor(const ParamSpec& spec) {
     QString text = translatedTooltip(spec);
-    text += QObject::tr("\nAllowed: %1").arg(QString::fromStdString(describeAllowed(spec)));
+    text += QObject::tr("\nAllowed: %1").arg(translatedAllowed(spec));
     text +=
         spec.appliesLive ? QObject::tr("\nTakes effect at once.") : QObject::tr("\nTakes effect on Reset.");
     return text;
@@ -169,7 +169,7 @@ QWidget* ParameterPanel::createEditor(const ParamSpec& spec) {
             // A decimal mark of the other language is named: in English 2,5 is no number (never 25).
             const QString point = ScientificSpinBox::numberLocale().decimalPoint();
             const QString other = point == QStringLiteral(".") ? QStringLiteral(",") : QStringLiteral(".");
-            const QString allowed = QString::fromStdString(describeAllowed(spec));
+            const QString allowed = translatedAllowed(spec);
             showProblem(
                 spec.key,
                 text.contains(other)
