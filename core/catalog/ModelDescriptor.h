@@ -63,6 +63,8 @@ struct PresentReadout {
     double scale = 1.0; // shown value = column × scale (a fraction as per cent, seconds as µs)
     char format = 'g';  // 'f': fixed decimals, 'g': significant digits
     int precision = 3;  // decimals ('f') or significant digits ('g')
+    // Shown only while the scene has a body: the forces on none would read 0 (the shock tube).
+    bool needsBodies = false;
 };
 
 // The large controls a lesson can have in present mode (ui/present/LessonControls.cpp draws them).

@@ -38,7 +38,7 @@ const ModelDescriptor& tunnelRegistration() {
         // Its time runs in microseconds at the watchable rate.
         .present = {.readouts = {{"particles", "molecules", "", 1.0, 'f', 0},
                                  {"collisions", "collisions per step", "", 1.0, 'f', 0},
-                                 {"drag", "drag", "N/m", 1.0, 'g', 3},
+                                 {"drag", "drag", "N/m", 1.0, 'g', 3, true},
                                  {"time", "t", "µs", 1e6, 'f', 1}},
                     .plot = "speedHistogram",
                     .controls = {LessonControl::Pace, LessonControl::FieldView}},

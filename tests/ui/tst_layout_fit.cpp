@@ -9,8 +9,10 @@
 #include "i18n/Translations.h"
 
 #include <QDockWidget>
+#include <QLabel>
 #include <QProcess>
 #include <QScreen>
+#include <QStatusBar>
 #include <QTemporaryDir>
 #include <QToolBar>
 #include <QToolButton>
@@ -153,6 +155,26 @@ private slots:
         }
         QVERIFY2(plots > 0, "no plot shown");
         QVERIFY(window.viewport()->width() >= 0.4 * window.width());
+        window.setProjectorMode(false);
+        window.document()->setModified(false);
+    }
+
+    // A message too long to fit beside the status line takes the whole bar while it shows, in projector
+    // mode at 1024 px too, and the status line comes back when it goes; a short one leaves it in place.
+    void aLongMessageTakesTheWholeStatusBar() {
+        ui::MainWindow window;
+        QVERIFY(window.document()->open("dsmc-write-up", true));
+        window.setProjectorMode(true);
+        showInScreen(window);
+        auto* line = window.findChild<QLabel*>("statusLine");
+        QVERIFY(line && line->isVisible());
+        window.statusBar()->showMessage(
+            "Run complete: 500 steps. The series and plots keep what was sampled.");
+        QVERIFY(!line->isVisible());
+        window.statusBar()->clearMessage();
+        QVERIFY(line->isVisible());
+        window.statusBar()->showMessage("Paused.");
+        QVERIFY(line->isVisible());
         window.setProjectorMode(false);
         window.document()->setModified(false);
     }

@@ -266,6 +266,15 @@ private slots:
         QVERIFY2(cut.isEmpty(), qPrintable("cut off: " + cut.join(", ")));
         const QStringList readouts = panel->readouts()->texts();
         QVERIFY2(readouts.size() >= 3, qPrintable(kind + " readouts: " + readouts.join("; ")));
+        // The forces on a body are read where the scene has one (not 0 N/m in the shock tube).
+        const SceneTools* tools = window.controller()->tools();
+        const bool hasBodies = tools && !tools->obstacles().empty();
+        for (const ui::ReadoutSpec& spec : ui::readoutSpecsFor(*window.controller()->model()))
+            if (spec.needsBodies)
+                QCOMPARE(
+                    readouts.filter(QRegularExpression("^" + QRegularExpression::escape(spec.name) + " = "))
+                        .size(),
+                    hasBodies ? 1 : 0);
         auto* leave = presentChild<QPushButton>(window, "presentLeave");
         QVERIFY(leave && leave->isVisibleTo(&window));
         QCOMPARE(shownPart(leave, &window), leave->rect());

@@ -137,7 +137,7 @@ void DistributionPlot::redraw() {
     }
     if (right > 0) plot_->xAxis->setRangeUpper(right);
     plot_->yAxis->setRange(0, top > 0 ? 1.15 * top : 1.0);
-    title_->setText(summaries.join("\n"));
+    setFittedTitle(title_, summaries.join("\n"));
     replotLive(plot_);
 }
 

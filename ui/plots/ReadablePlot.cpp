@@ -139,13 +139,14 @@ QStringList wrapped(const QStringList& lines, const QFontMetricsF& metrics, doub
     return out;
 }
 
-// A title (or a line of it) wider than the plot is wrapped, then set smaller, then shortened.
-void fitTitle(QCPTextElement* title, double width) {
-    if (title->property("pl_shownText").toString() != title->text() ||
-        title->property("pl_shownFont").value<QFont>() != title->font()) {
+// A title (or a line of it) wider than the plot is wrapped, then set smaller, then shortened. Returns
+// whether it now needs more height than the layout gave it (the layout must run again).
+bool fitTitle(QCPTextElement* title, double width) {
+    // A text or font set from outside is the new full text or base font; what this function set is not.
+    if (title->property("pl_shownText").toString() != title->text())
         title->setProperty("pl_fullText", title->text());
+    if (title->property("pl_shownFont").value<QFont>() != title->font())
         title->setProperty("pl_baseFont", title->font());
-    }
     const QFont base = title->property("pl_baseFont").value<QFont>();
     const QStringList lines =
         wrapped(title->property("pl_fullText").toString().split('\n'), QFontMetricsF(base), width);
@@ -159,6 +160,9 @@ void fitTitle(QCPTextElement* title, double width) {
     title->setText(shown.join('\n'));
     title->setProperty("pl_shownText", title->text());
     title->setProperty("pl_shownFont", font);
+    const int needed =
+        static_cast<const QCPLayoutElement*>(title)->minimumOuterSizeHint().height(); // public there
+    return !title->text().isEmpty() && needed > title->outerRect().height();
 }
 } // namespace
 
@@ -176,6 +180,11 @@ void placeLegendRow(QCustomPlot* plot, QCPLegend* legend, int row) {
     legend->setColumnSpacing(12);
     legend->setIconSize(20, 10); // short line samples leave the text more of the width
     legend->setVisible(true);
+}
+
+void setFittedTitle(QCPTextElement* title, const QString& text) {
+    title->setText(text);
+    fitTitle(title, title->parentPlot()->viewport().width());
 }
 
 void keepDataReadable(QCustomPlot* plot) {
@@ -201,7 +210,7 @@ void keepDataReadable(QCustomPlot* plot) {
         }
         for (int i = 0; i < layout->elementCount(); ++i)
             if (auto* title = qobject_cast<QCPTextElement*>(layout->elementAt(i)))
-                fitTitle(title, plot->viewport().width());
+                again |= fitTitle(title, plot->viewport().width());
         if (again) plot->replot(QCustomPlot::rpQueuedReplot);
     });
 }

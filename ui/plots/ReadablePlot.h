@@ -7,12 +7,18 @@
 
 class QCustomPlot;
 class QCPLegend;
+class QCPTextElement;
+class QString;
 
 namespace pl::ui {
 
 // Puts legend (new, or taken from an axis rect's inset) into the plot's layout at row, column 0, rows
 // below moving down; the row keeps the legend's height.
 void placeLegendRow(QCustomPlot* plot, QCPLegend* legend, int row);
+
+// Sets a title's full text, already fitted to the plot's present width, so the next layout gives it the
+// height of the lines it shows (a summary that changes every frame is never laid out as one long line).
+void setFittedTitle(QCPTextElement* title, const QString& text);
 
 // Call once per plot: from then on its legends re-flow and its value labels fit after every layout.
 void keepDataReadable(QCustomPlot* plot);

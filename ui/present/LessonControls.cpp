@@ -257,10 +257,10 @@ void LessonControls::addGravitySlider(QVBoxLayout* group, double maximum) {
     slider->setRange(0, kSliderSteps);
     const double now = std::abs(number(controller_->parameterValues(), "gravity", 0));
     slider->setValue(static_cast<int>(std::lround(kSliderSteps * std::min(1.0, now / maximum))));
-    value->setText(QString::number(now, 'g', 3));
+    value->setText(QLocale().toString(now, 'g', 3));
     connect(slider, &QSlider::valueChanged, this, [this, maximum, value](int v) {
         const double g = maximum * v / kSliderSteps;
-        value->setText(QString::number(g, 'g', 3));
+        value->setText(QLocale().toString(g, 'g', 3));
         const QString problem = controller_->setParameters({{"gravity", g}});
         if (!problem.isEmpty()) say(problem);
     });

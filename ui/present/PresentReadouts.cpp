@@ -1,5 +1,5 @@
-// PresentReadouts: a two-column board of big numbers; a readout whose column the model lacks is left out,
-// one that is not (yet) finite shows a dash rather than "nan".
+// PresentReadouts: a two-column board of big numbers; a readout whose column the model lacks, or that
+// needs a body the scene has not, is left out; one that is not (yet) finite shows a dash rather than "nan".
 #include "PresentReadouts.h"
 
 #include "PresentBoard.h"
@@ -30,7 +30,8 @@ std::vector<ReadoutSpec> readoutSpecsFor(const Model& model) {
     std::vector<ReadoutSpec> out;
     for (const PresentReadout& r : presentReadouts(model))
         out.push_back({QString::fromStdString(r.column), coreText(r.label),
-                       r.unit.empty() ? QString() : coreText(r.unit), r.scale, r.format, r.precision});
+                       r.unit.empty() ? QString() : coreText(r.unit), r.scale, r.format, r.precision,
+                       r.needsBodies});
     return out;
 }
 
@@ -53,10 +54,12 @@ void PresentReadouts::rebuild() {
     const Model* model = controller_->model();
     if (!model) return;
     const QFont big = valueFont(font());
+    const SceneTools* tools = controller_->tools();
+    const bool hasBodies = tools && !tools->obstacles().empty();
     int index = 0;
     for (const ReadoutSpec& spec : readoutSpecsFor(*model)) {
         const int column = controller_->series()->column(spec.column);
-        if (column < 0) continue;
+        if (column < 0 || (spec.needsBodies && !hasBodies)) continue;
         auto* name = new QLabel(spec.name, this);
         auto* value = new QLabel(this);
         value->setObjectName("readout_" + spec.column);

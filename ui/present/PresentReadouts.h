@@ -26,6 +26,7 @@ struct ReadoutSpec {
     double scale = 1.0;
     char format = 'g';
     int precision = 3;
+    bool needsBodies = false; // left out while the scene has no body
 };
 
 // The readouts of the model's kind, in the UI's language.

@@ -64,13 +64,6 @@ private:
     const TimeSeries& series_;
 };
 
-QString unitOf(const Model& model, const std::string& column) {
-    if (const ModelDescriptor* kind = findModel(model.kind()))
-        for (const SeriesColumn& c : kind->series)
-            if (c.name == column) return QString::fromStdString(c.unit);
-    return {};
-}
-
 double paramNumber(const ParamValues& params, const std::string& key) {
     const auto it = params.find(key);
     return it != params.end() && std::holds_alternative<double>(it->second) ? std::get<double>(it->second)
@@ -155,7 +148,7 @@ void compressionRows(const Columns& columns, std::vector<ReportRow>& rows) {
 
 void dsmcRows(const Columns& columns, std::vector<ReportRow>& rows) {
     for (const int k : {4, 6, 8}) {
-        const std::string name = "M" + std::to_string(k);
+        const std::string name = std::string("M").append(std::to_string(k)); // GCC 12 misreads "M" + string
         const double measured = columns.last(name), exact = columns.last(name + "_bkw");
         if (!std::isfinite(measured) || !std::isfinite(exact)) continue;
         rows.push_back(
