@@ -11,6 +11,7 @@
 #include <QDockWidget>
 #include <QLabel>
 #include <QProcess>
+#include <QPushButton>
 #include <QScreen>
 #include <QStatusBar>
 #include <QTemporaryDir>
@@ -215,6 +216,38 @@ private slots:
                          qPrintable(QString("%1: %2 is not shown").arg(bar->objectName(), action->text())));
             }
         }
+        window.setProjectorMode(false);
+        window.document()->setModified(false);
+        ui::installLanguage("en");
+    }
+
+    // The Parameters dock's first lines, as wide as the dock is at 1024 px: the note on Reset keeps the
+    // height its wrapped lines need and Reset now shows its whole text (in German projector mode the note
+    // was squeezed to a word a line beside a clipped "zt zurücksetze").
+    void parameterBannerFits_data() { noToolBarItemOverflows_data(); }
+    void parameterBannerFits() {
+        QFETCH(QString, preset);
+        QFETCH(QString, language);
+        QFETCH(bool, projector);
+        QVERIFY(ui::installLanguage(language));
+        ui::MainWindow window;
+        QVERIFY(window.openPreset(preset));
+        showInScreen(window);
+        window.setProjectorMode(projector);
+        QTest::qWait(150);
+        auto* note = window.findChild<QLabel*>("idleLine");
+        auto* reset = window.findChild<QPushButton*>("resetNow");
+        QVERIFY(note && reset && note->isVisible() && reset->isVisible());
+        QVERIFY2(note->height() >= note->heightForWidth(note->width()),
+                 qPrintable(QString("the note is %1 px high and needs %2 at %3 px")
+                                .arg(note->height())
+                                .arg(note->heightForWidth(note->width()))
+                                .arg(note->width())));
+        QVERIFY2(note->width() >= reset->width(),
+                 qPrintable(QString("the note gets %1 px").arg(note->width())));
+        QVERIFY2(reset->width() >= reset->sizeHint().width(),
+                 qPrintable(
+                     QString("Reset now is %1 px of %2").arg(reset->width()).arg(reset->sizeHint().width())));
         window.setProjectorMode(false);
         window.document()->setModified(false);
         ui::installLanguage("en");

@@ -60,9 +60,10 @@ ParameterPanel::ParameterPanel(SimulationController* controller, QWidget* parent
     units_->setObjectName("unitsLine");
     units_->setWordWrap(true);
     layout->addWidget(units_);
-    auto* banner = new QHBoxLayout;
+    bannerRow_ = new QBoxLayout(QBoxLayout::LeftToRight);
     banner_ = new QStackedWidget(this);
     idleLine_ = new QLabel(tr("Parameters marked ⟲ take effect on Reset; the others act at once."), banner_);
+    idleLine_->setObjectName("idleLine");
     idleLine_->setWordWrap(true);
     pending_ = new QLabel(banner_);
     pending_->setObjectName("pendingLine");
@@ -71,11 +72,12 @@ ParameterPanel::ParameterPanel(SimulationController* controller, QWidget* parent
     banner_->addWidget(idleLine_);
     banner_->addWidget(pending_);
     resetButton_ = new QPushButton(tr("Reset now"), this);
+    resetButton_->setObjectName("resetNow");
     resetButton_->setToolTip(tr("Restart the experiment so the parameters marked ⟲ take effect (Ctrl+R)"));
     connect(resetButton_, &QPushButton::clicked, controller_, &SimulationController::reset);
-    banner->addWidget(banner_, 1);
-    banner->addWidget(resetButton_);
-    layout->addLayout(banner);
+    bannerRow_->addWidget(banner_, 1);
+    bannerRow_->addWidget(resetButton_, 0, Qt::AlignRight);
+    layout->addLayout(bannerRow_);
     auto* scroll = new QScrollArea(this);
     scroll->setWidgetResizable(true);
     scroll->setFrameShape(QFrame::NoFrame);
@@ -298,6 +300,31 @@ void ParameterPanel::updatePendingBanner() {
         pending_->setText(tr("%n change(s) wait for Reset.", nullptr, static_cast<int>(waiting)));
     banner_->setCurrentWidget(waiting == 0 ? idleLine_ : pending_);
     resetButton_->setEnabled(waiting > 0);
+    fitBanner();
+}
+
+void ParameterPanel::fitBanner() {
+    // Beside the button the line would get less room than the button itself (German, projector mode):
+    // it goes above it and takes the whole width.
+    const int width =
+        contentsRect().width() - layout()->contentsMargins().left() - layout()->contentsMargins().right();
+    const int button = resetButton_->sizeHint().width();
+    const bool above = 2 * button > width;
+    bannerRow_->setDirection(above ? QBoxLayout::TopToBottom : QBoxLayout::LeftToRight);
+    const int lineWidth = std::max(1, above ? width : width - button - bannerRow_->spacing());
+    // A stacked widget takes its pages' one-line height: the wrapped lines ask for theirs.
+    banner_->setMinimumHeight(
+        std::max(idleLine_->heightForWidth(lineWidth), pending_->heightForWidth(lineWidth)));
+}
+
+void ParameterPanel::resizeEvent(QResizeEvent* event) {
+    QWidget::resizeEvent(event);
+    fitBanner();
+}
+
+void ParameterPanel::changeEvent(QEvent* event) {
+    QWidget::changeEvent(event);
+    if (event->type() == QEvent::FontChange) fitBanner();
 }
 
 bool ParameterPanel::eventFilter(QObject* watched, QEvent* event) {

@@ -11,6 +11,7 @@
 #include <functional>
 #include <map>
 
+class QBoxLayout;
 class QFormLayout;
 class QLabel;
 class QPushButton;
@@ -38,6 +39,9 @@ private:
     void showUnits();
     void showValues();
     void updatePendingBanner();
+    void fitBanner(); // the line beside Reset now, or above it where the panel is too narrow
+    void resizeEvent(QResizeEvent* event) override;
+    void changeEvent(QEvent* event) override;
     QWidget* createEditor(const ParamSpec& spec);
     bool eventFilter(QObject* watched, QEvent* event) override; // the wheel over an unfocused choice
     void showValue(const std::string& key);                     // the model's value, without signals
@@ -50,6 +54,7 @@ private:
     QLabel* units_ = nullptr; // "Units: reduced (L, T, M)"; the tooltip says each quantity's unit
     // The banner's two lines, stacked: its height is the taller one's, so the fields below never move
     // when changes start or stop waiting for Reset.
+    QBoxLayout* bannerRow_ = nullptr;
     QStackedWidget* banner_ = nullptr;
     QLabel* idleLine_ = nullptr;
     QLabel* pending_ = nullptr;
