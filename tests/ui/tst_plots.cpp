@@ -80,6 +80,13 @@ QStringList problemsOf(QCustomPlot* plot) {
                 problems
                     << QString("'%1' has %2 points its log axis cannot show").arg(graph->name()).arg(dropped);
         }
+        // A count or a value up to a million is read as a plain number ("molecules  32000", not 3.2E+04).
+        static const QRegularExpression exponentOfAPlainNumber("\\d[eE]\\+0?[0-5]\\b");
+        for (QCPLegend* legend : std::as_const(legends))
+            for (int i = 0; i < legend->itemCount(); ++i)
+                if (auto* item = qobject_cast<QCPPlottableLegendItem*>(legend->item(i));
+                    item && exponentOfAPlainNumber.match(item->plottable()->name()).hasMatch())
+                    problems << QString("the legend writes '%1'").arg(item->plottable()->name());
         QCPAxis* y = rect->axis(QCPAxis::atLeft);
         const double length = QFontMetricsF(y->labelFont()).horizontalAdvance(y->label());
         if (length > rect->height() + 1)

@@ -171,8 +171,13 @@ void SeriesPlot::refresh() {
         // The legend shows the latest value: the number a teacher reads out, in the UI's language.
         QLocale locale;
         locale.setNumberOptions(QLocale::OmitGroupSeparator);
+        // Up to a million as a plain number: "molecules  32000", not 3.2E+04.
+        const auto number = [&locale](double v) {
+            return std::abs(v) >= 1e3 && std::abs(v) < 1e6 ? locale.toString(v, 'f', 0)
+                                                           : locale.toString(v, 'g', 4);
+        };
         graph->setName(!values.isEmpty() && std::isfinite(values.back())
-                           ? QStringLiteral("%1  %2").arg(b.label, locale.toString(values.back(), 'g', 4))
+                           ? QStringLiteral("%1  %2").arg(b.label, number(values.back()))
                            : b.label);
     }
     for (const BackKey& key : backKeys_) {

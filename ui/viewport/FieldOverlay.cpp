@@ -71,7 +71,7 @@ double paintParticleLegend(QPainter& painter, const ViewTransform& transform, co
     const QString title = coreText(scene.colourLabel);
     QLocale locale;
     locale.setNumberOptions(QLocale::OmitGroupSeparator);
-    const QString top = locale.toString(scene.colourMax, 'g', 3);
+    const QString top = formatFieldValue(scene.colourMax); // 5274, not 5.27E+03
     const double inner = width - line;
     const bool ownLine = metrics.horizontalAdvance(title) + 2 * metrics.horizontalAdvance(top) + line > inner;
     const double titleHeight = ownLine ? line : 0.0;
