@@ -82,6 +82,7 @@ MainWindow::MainWindow(QWidget* parent)
     statusTimer->start(kStatusIntervalMs);
     connect(controller_, &SimulationController::modelReplaced, this, &MainWindow::modelChanged);
     connect(controller_, &SimulationController::frameAdvanced, this, &MainWindow::updateStatus);
+    connect(controller_, &SimulationController::runningChanged, this, &MainWindow::updateStatus);
     connect(controller_, &SimulationController::failed, this, [this](const QString& message) {
         updateRunActions(); // the viewport says to Reset; Play would do nothing
         QMessageBox::warning(this, tr("The simulation stopped"), message);
@@ -302,8 +303,16 @@ void MainWindow::updateStatus() {
         return;
     }
     // The pace as the class sees it: steps a second and how much simulated time a second of the lesson
-    // shows.
+    // shows; while time stands, that it stands (not "0 steps/s, 0 fps").
     const QLocale locale;
+    if (!controller_->isRunning()) {
+        status_->setText(tr("%1 particles   t = %2   step %3   stopped   %4")
+                             .arg(locale.toString(static_cast<qulonglong>(model->particleCount())))
+                             .arg(locale.toString(model->time(), 'g', 6))
+                             .arg(locale.toString(static_cast<qlonglong>(model->stepCount())))
+                             .arg(model->backend() == "gl" ? tr("GPU") : tr("CPU")));
+        return;
+    }
     status_->setText(tr("%1 particles   t = %2   step %3   %4 steps/s (%5 %6 per second)   %7 fps   %8")
                          .arg(locale.toString(static_cast<qulonglong>(model->particleCount())))
                          .arg(locale.toString(model->time(), 'g', 6))

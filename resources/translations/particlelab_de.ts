@@ -3179,6 +3179,10 @@ Wirkt nach „Zurücksetzen“.</translation>
         <source>Encoding the last frames of the clip…</source>
         <translation>Die letzten Bilder des Clips werden kodiert…</translation>
     </message>
+    <message>
+        <source>%1 particles   t = %2   step %3   stopped   %4</source>
+        <translation>%1 Teilchen   t = %2   Schritt %3   angehalten   %4</translation>
+    </message>
 </context>
 <context>
     <name>pl::ui::MethodsLab</name>

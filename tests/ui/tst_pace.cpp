@@ -140,14 +140,17 @@ private slots:
         clock.start();
         runFor(1000);
         const double wall = clock.elapsed() / 1000.0;
+        const QString status = window.findChild<QLabel*>("statusLine")->text();
         controller->pause();
         const double perSecond = controller->model()->time() / wall;
         qInfo("dsmc-write-up: %.4g s of model time per second, cap %.4g", perSecond, rate);
         QVERIFY2(perSecond <= rate * 1.1, qPrintable(QString::number(perSecond)));
         QVERIFY2(perSecond > 0.3 * rate, qPrintable(QString::number(perSecond)));
-        // The status bar says steps a second and model time a second.
-        const QString status = window.findChild<QLabel*>("statusLine")->text();
+        // The status bar says steps a second and model time a second while time runs, and that it stands
+        // once paused.
         QVERIFY2(status.contains("steps/s") && status.contains(" s per second"), qPrintable(status));
+        const QString paused = window.findChild<QLabel*>("statusLine")->text();
+        QVERIFY2(paused.contains("stopped") && !paused.contains("fps"), qPrintable(paused));
     }
 
     void dragFollowsTheHandAtTheDefaultPace() {
