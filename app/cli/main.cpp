@@ -41,8 +41,7 @@ int main(int argc, char** argv) {
     std::string columnsScene;
     auto* columnsCmd = app.add_subcommand(
         "columns", "List a scene's series columns, the CSV header of run: name, unit, label");
-    columnsCmd->add_option("scene", columnsScene, "A scene kind (" + sceneKinds() + ") or a preset")
-        ->required();
+    columnsCmd->add_option("scene", columnsScene, "A scene (" + sceneKinds() + ") or a preset")->required();
     columnsCmd->footer(sceneUnits());
 
     RunOptions run;

@@ -56,6 +56,12 @@ const ModelDescriptor* findModel(const std::string& kind) {
     return nullptr;
 }
 
+std::string unknownScene(const std::string& kind) {
+    std::string scenes;
+    for (const ModelDescriptor& m : modelCatalog()) scenes += (scenes.empty() ? "" : ", ") + m.kind;
+    return "unknown scene \"" + kind + "\" (the scenes are " + scenes + ")";
+}
+
 const std::vector<ParamSpec>* specsForModel(const std::string& kind) {
     const ModelDescriptor* m = findModel(kind);
     return m ? m->specs : nullptr;
@@ -68,7 +74,7 @@ std::unique_ptr<Model> createModel(const std::string& kind) {
 
 std::size_t particleCount(const Preset& preset) {
     const ModelDescriptor* m = findModel(preset.model);
-    if (!m) throw PresetError("model", "unknown model \"" + preset.model + "\"");
+    if (!m) throw PresetError("model", unknownScene(preset.model));
     try {
         return m->particleCount(preset);
     } catch (const ParamError& e) {
@@ -136,7 +142,7 @@ Preset loadPreset(const std::string& nameOrPath) {
 
 std::unique_ptr<Model> instantiate(const Preset& preset) {
     auto model = createModel(preset.model);
-    if (!model) throw PresetError("model", "unknown model \"" + preset.model + "\"");
+    if (!model) throw PresetError("model", unknownScene(preset.model));
     model->reset(preset);
     return model;
 }

@@ -23,6 +23,8 @@ const std::vector<std::reference_wrapper<const ModelDescriptor>>& modelCatalog()
 void registerModel(const ModelDescriptor& descriptor);
 // The kind's descriptor, or nullptr for an unknown kind.
 const ModelDescriptor* findModel(const std::string& kind);
+// "unknown scene \"plasma\" (the scenes are gas, dsmc, fluid, tunnel)": the user's word for a kind.
+std::string unknownScene(const std::string& kind);
 const std::vector<ParamSpec>* specsForModel(const std::string& kind);
 
 // A new model of this kind, reset to its defaults; nullptr for an unknown kind.

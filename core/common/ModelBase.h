@@ -62,7 +62,8 @@ public:
     // reset (PresetError) leaves the model as its previous parameters build it.
     void reset(const Preset& preset) final {
         if (preset.model != kind())
-            throw PresetError("model", "preset is for model '" + preset.model + "', not " + kind());
+            throw PresetError("model",
+                              "the preset is for the scene '" + preset.model + "', not '" + kind() + "'");
         Params next;
         try {
             next = withValues(Params{}, Params::fields(), preset.params);

@@ -208,7 +208,7 @@ Preset parsePreset(std::string_view text, const SpecLookup& specsFor, const std:
         fail(source, "model", "'model' must name the scene, e.g. \"gas\"");
     preset.model = root.at("model").get<std::string>();
     const std::vector<ParamSpec>* specs = specsFor(preset.model);
-    if (!specs) fail(source, "model", "unknown model \"" + preset.model + "\"");
+    if (!specs) fail(source, "model", "unknown scene \"" + preset.model + "\"");
 
     for (const char* key : {"name", "description"}) {
         if (!root.contains(key)) continue;

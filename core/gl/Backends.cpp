@@ -91,7 +91,7 @@ BackendChoice create(const ModelDescriptor& descriptor, Backend backend, const P
 
 const ModelDescriptor& registered(const std::string& kind) {
     const ModelDescriptor* descriptor = findModel(kind);
-    if (!descriptor) throw PresetError("model", "unknown model \"" + kind + "\"");
+    if (!descriptor) throw PresetError("model", unknownScene(kind));
     return *descriptor;
 }
 
