@@ -7,6 +7,7 @@
 #include "MainWindow.h"
 #include "SimulationController.h"
 #include "plots/DistributionPlot.h"
+#include "plots/ReadablePlot.h"
 #include "plots/SeriesPlot.h"
 
 #include <QDockWidget>
@@ -87,7 +88,16 @@ QStringList problemsOf(QCustomPlot* plot) {
                 if (auto* item = qobject_cast<QCPPlottableLegendItem*>(legend->item(i));
                     item && exponentOfAPlainNumber.match(item->plottable()->name()).hasMatch())
                     problems << QString("the legend writes '%1'").arg(item->plottable()->name());
+        // A value label shortened to fit gives its whole text as the tooltip where it is drawn.
         QCPAxis* y = rect->axis(QCPAxis::atLeft);
+        const QString fullLabel = y->property("pl_fullLabel").toString();
+        if (y->label() != fullLabel) {
+            const QPointF onLabel(rect->left() - y->offset() - y->padding() - 0.5 * y->labelPadding() - 4,
+                                  rect->center().y());
+            if (ui::shortenedTextAt(plot, onLabel) != fullLabel)
+                problems << QString("the label '%1' is shortened and its tooltip is not '%2'")
+                                .arg(y->label(), fullLabel);
+        }
         const double length = QFontMetricsF(y->labelFont()).horizontalAdvance(y->label());
         if (length > rect->height() + 1)
             problems << QString("the label '%1' (%2 px) is longer than its axis (%3 px)")

@@ -6,6 +6,8 @@
 #include "FrameProfile.h"
 
 #include <QFontMetricsF>
+#include <QMouseEvent>
+#include <QToolTip>
 #include <algorithm>
 #include <cmath>
 #include <memory>
@@ -182,6 +184,25 @@ void placeLegendRow(QCustomPlot* plot, QCPLegend* legend, int row) {
     legend->setVisible(true);
 }
 
+QString shortenedTextAt(QCustomPlot* plot, const QPointF& at) {
+    for (QCPAxisRect* rect : plot->axisRects()) {
+        QCPAxis* axis = rect->axis(QCPAxis::atLeft);
+        const QString full = axis->property("pl_fullLabel").toString();
+        // The value label runs up the strip left of the axis rect, beside it.
+        if (at.x() < rect->left() && at.y() >= rect->top() && at.y() <= rect->bottom() &&
+            full != axis->label())
+            return full;
+    }
+    for (int i = 0; i < plot->plotLayout()->elementCount(); ++i)
+        if (auto* title = qobject_cast<QCPTextElement*>(plot->plotLayout()->elementAt(i))) {
+            const QString full = title->property("pl_fullText").toString();
+            if (title->outerRect().contains(at.toPoint()) && title->text().contains(QChar(0x2026)) &&
+                full != title->text())
+                return full;
+        }
+    return {};
+}
+
 void setFittedTitle(QCPTextElement* title, const QString& text) {
     title->setText(text);
     fitTitle(title, title->parentPlot()->viewport().width());
@@ -194,6 +215,14 @@ void keepDataReadable(QCustomPlot* plot) {
     QObject::connect(plot, &QCustomPlot::afterReplot, plot, [replotClock] {
         if (replotClock->isValid() && FrameProfile::instance().enabled())
             FrameProfile::instance().add(FramePart::Replot, replotClock->nsecsElapsed());
+    });
+    // A label or title shortened to fit says its whole text where the pointer rests on it.
+    QObject::connect(plot, &QCustomPlot::mouseMove, plot, [plot](QMouseEvent* event) {
+        const QString full = shortenedTextAt(plot, event->position());
+        if (full.isEmpty())
+            QToolTip::hideText();
+        else
+            QToolTip::showText(event->globalPosition().toPoint(), full, plot);
     });
     QObject::connect(plot, &QCustomPlot::afterLayout, plot, [plot] {
         bool again = false;

@@ -8,6 +8,7 @@
 class QCustomPlot;
 class QCPLegend;
 class QCPTextElement;
+class QPointF;
 class QString;
 
 namespace pl::ui {
@@ -19,6 +20,10 @@ void placeLegendRow(QCustomPlot* plot, QCPLegend* legend, int row);
 // Sets a title's full text, already fitted to the plot's present width, so the next layout gives it the
 // height of the lines it shows (a summary that changes every frame is never laid out as one long line).
 void setFittedTitle(QCPTextElement* title, const QString& text);
+
+// The whole text of a value label or title shown shortened ("probability …") at the point, in the
+// plot's pixels; empty elsewhere. The plot shows it as the tooltip there.
+QString shortenedTextAt(QCustomPlot* plot, const QPointF& at);
 
 // Call once per plot: from then on its legends re-flow and its value labels fit after every layout.
 void keepDataReadable(QCustomPlot* plot);
