@@ -8,6 +8,7 @@
 //   poly6 W = 4/(π h⁸)(h² − r²)³,       spiky W = 10/(π h⁵)(h − r)³, ∇W = −30/(π h⁵)(h − r)² r̂.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <numbers>
@@ -108,6 +109,22 @@ struct LaneKernels {
         Lanes p = ratio;
         for (int e = 1; e < n; ++e) p = p * ratio;
         return minusK * p;
+    }
+};
+
+// The two solver particles of lane-pair block b (the same one twice in an odd count's last block), or
+// their particle numbers: the blocks every two-lane pass of the solver walks.
+struct BlockPair {
+    std::uint32_t first, second;
+    BlockPair(long long b, long long count)
+        : first(static_cast<std::uint32_t>(2 * b)),
+          second(static_cast<std::uint32_t>(std::min(2 * b + 1, count - 1))) {}
+    BlockPair(BlockPair solver, const std::uint32_t* order)
+        : first(order[solver.first]), second(order[solver.second]) {}
+    Lanes gather(const double* values) const { return Lanes::gather(values, first, second); }
+    void scatter(Lanes v, double* values) const {
+        values[first] = v.lane0();
+        if (second != first) values[second] = v.lane1(); // a lone particle fills both lanes alike
     }
 };
 

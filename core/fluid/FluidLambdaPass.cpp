@@ -11,19 +11,6 @@ namespace pl::fluid {
 
 namespace {
 
-// The two solver particles of block b (the same one twice in an odd count's last block).
-struct BlockParticles {
-    std::uint32_t first, second;
-    BlockParticles(long long b, long long count)
-        : first(static_cast<std::uint32_t>(2 * b)),
-          second(static_cast<std::uint32_t>(std::min(2 * b + 1, count - 1))) {}
-    Lanes gather(const double* values) const { return Lanes::gather(values, first, second); }
-    void scatter(Lanes v, double* values) const {
-        values[first] = v.lane0();
-        if (second != first) values[second] = v.lane1(); // a lone particle fills both lanes alike
-    }
-};
-
 // One block's sums over its rows, two pairs per step (each lane its own row).
 struct BlockSums {
     Lanes rho, gx, gy, sumSquares, sx, sy;
@@ -49,8 +36,7 @@ inline void addSlot(const LambdaArrays& a, const LaneKernels& k, Lanes xi, Lanes
     s.sumSquares += f * f * r2;
 }
 
-inline void finishBlock(const LambdaArrays& a, const LambdaConstants& c, BlockParticles pair,
-                        const BlockSums& s) {
+inline void finishBlock(const LambdaArrays& a, const LambdaConstants& c, BlockPair pair, const BlockSums& s) {
     const Lanes inverseRest = Lanes::all(c.inverseRest), one = Lanes::all(1.0);
     const Lanes constraint = s.rho * inverseRest - one;
     pair.scatter(constraint, a.constraint);
@@ -70,7 +56,7 @@ BlockSums startBlock(const LambdaConstants& c) {
 
 void sse2Blocks(const LambdaArrays& a, const LambdaConstants& c, long long first, long long last) {
     for (long long b = first; b < last; ++b) {
-        const BlockParticles pair(b, a.count);
+        const BlockPair pair(b, a.count);
         const Lanes xi = pair.gather(a.px), yi = pair.gather(a.py);
         BlockSums s = startBlock(c);
         for (std::size_t e = 2 * std::size_t{a.blockStart[b]}; e < 2 * std::size_t{a.blockStart[b + 1]};
@@ -146,7 +132,7 @@ __attribute__((target("avx"))) void addTwoSlots(const LambdaArrays& a, const Lan
 __attribute__((target("avx"))) void avxBlocks(const LambdaArrays& a, const LambdaConstants& c,
                                               long long first, long long last) {
     for (long long b = first; b < last; ++b) {
-        const BlockParticles pair(b, a.count);
+        const BlockPair pair(b, a.count);
         const Lanes xi = pair.gather(a.px), yi = pair.gather(a.py);
         const Quad xq = quadAll(xi), yq = quadAll(yi);
         BlockSums s = startBlock(c);

@@ -12,6 +12,8 @@
 namespace pl {
 
 namespace {
+using fluid::BlockPair;
+
 long long loopCount(const FluidState& state) {
     return static_cast<long long>(state.size());
 }
@@ -70,25 +72,6 @@ void FluidModel::leaveSolverNumbers() {
     px_.swap(nextX_);
     py_.swap(nextY_);
 }
-
-namespace {
-// The two solver particles of lane-pair block b (the same one twice in an odd count's last block), or
-// their particle numbers.
-struct BlockPair {
-    std::uint32_t first, second;
-    BlockPair(long long b, long long count)
-        : first(static_cast<std::uint32_t>(2 * b)),
-          second(static_cast<std::uint32_t>(std::min(2 * b + 1, count - 1))) {}
-    BlockPair(BlockPair solver, const std::uint32_t* order)
-        : first(order[solver.first]), second(order[solver.second]) {}
-    Lanes gather(const double* values) const { return Lanes::gather(values, first, second); }
-    void scatter(Lanes v, double* values) const {
-        values[first] = v.lane0();
-        if (second != first) values[second] = v.lane1(); // a lone particle fills both lanes alike
-    }
-};
-
-} // namespace
 
 // Lines 9–11: ρ_i = Σ_j W(x_i − x_j) (eq. 2), C_i = ρ_i/ρ₀ − 1 (eq. 1),
 // λ_i = −C_i / (Σ_k |∇_k C_i|² + ε) (eq. 11) with ∇_i C_i = Σ_j ∇W_ij / ρ₀ and ∇_j C_i = −∇W_ij / ρ₀ (eq. 8).
