@@ -124,7 +124,9 @@ private slots:
         QVERIFY2(m.contains("schema 4 is not supported"), qPrintable(m));
     }
 
-    void unknownModel() { QVERIFY(errorOf(R"({"schema": 1, "model": "plasma"})").contains("unknown scene \"plasma\"")); }
+    void unknownModel() {
+        QVERIFY(errorOf(R"({"schema": 1, "model": "plasma"})").contains("unknown scene \"plasma\""));
+    }
 
     void unknownKeys() {
         std::string key;
