@@ -305,23 +305,22 @@ void MainWindow::updateStatus() {
     // The pace as the class sees it: steps a second and how much simulated time a second of the lesson
     // shows; while time stands, that it stands (not "0 steps/s, 0 fps").
     const QLocale locale;
+    const QString particles = locale.toString(static_cast<qulonglong>(model->particleCount()));
+    const QString time = locale.toString(model->time(), 'g', 6);
+    const QString step = locale.toString(static_cast<qlonglong>(model->stepCount()));
+    const QString backend = model->backend() == "gl" ? tr("GPU") : tr("CPU");
     if (!controller_->isRunning()) {
-        status_->setText(tr("%1 particles   t = %2   step %3   stopped   %4")
-                             .arg(locale.toString(static_cast<qulonglong>(model->particleCount())))
-                             .arg(locale.toString(model->time(), 'g', 6))
-                             .arg(locale.toString(static_cast<qlonglong>(model->stepCount())))
-                             .arg(model->backend() == "gl" ? tr("GPU") : tr("CPU")));
+        status_->setText(
+            tr("%1 particles   t = %2   step %3   stopped   %4").arg(particles, time, step, backend));
         return;
     }
     status_->setText(tr("%1 particles   t = %2   step %3   %4 steps/s (%5 %6 per second)   %7 fps   %8")
-                         .arg(locale.toString(static_cast<qulonglong>(model->particleCount())))
-                         .arg(locale.toString(model->time(), 'g', 6))
-                         .arg(locale.toString(static_cast<qlonglong>(model->stepCount())))
+                         .arg(particles, time, step)
                          .arg(locale.toString(controller_->stepsPerSecond(), 'f', 0))
                          .arg(locale.toString(controller_->simulatedPerSecond(), 'g', 3))
                          .arg(controller_->timeUnit())
                          .arg(locale.toString(viewportCore_->framesPerSecond(), 'f', 0))
-                         .arg(model->backend() == "gl" ? tr("GPU") : tr("CPU")));
+                         .arg(backend));
 }
 
 void MainWindow::readSettings() {

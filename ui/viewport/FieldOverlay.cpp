@@ -69,8 +69,6 @@ double paintParticleLegend(QPainter& painter, const ViewTransform& transform, co
     }
     // The title sits between the ends of the scale where it fits, else on a line of its own above.
     const QString title = coreText(scene.colourLabel);
-    QLocale locale;
-    locale.setNumberOptions(QLocale::OmitGroupSeparator);
     const QString top = formatFieldValue(scene.colourMax); // 5274, not 5.27E+03
     const double inner = width - line;
     const bool ownLine = metrics.horizontalAdvance(title) + 2 * metrics.horizontalAdvance(top) + line > inner;
