@@ -229,9 +229,10 @@ void SimulationController::stepOnce() {
     emit frameAdvanced();
 }
 
-void SimulationController::watchSteps(int every, std::function<void()> atStep) {
+void SimulationController::watchSteps(int every, std::function<void()> atStep, std::function<bool()> ready) {
     watchEvery_ = every > 0 && atStep ? every : 0;
     watch_ = std::move(atStep);
+    watchReady_ = watchEvery_ > 0 ? std::move(ready) : std::function<bool()>{};
 }
 
 void SimulationController::stepModel() {
@@ -367,7 +368,7 @@ void SimulationController::advanceFrame() {
         const qint64 budget = static_cast<qint64>(stepBudgetMs_ * kNanosecondsPerMs);
         if (automatic_) {
             while (steps < limit && !model_->failure() && std::abs(model_->time() - startTime) < allowance_ &&
-                   clock.nsecsElapsed() < budget) {
+                   clock.nsecsElapsed() < budget && (!watchReady_ || watchReady_())) {
                 stepModel();
                 ++steps;
             }

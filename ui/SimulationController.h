@@ -71,7 +71,10 @@ public:
 
     // Calls atStep after every step whose count is a multiple of `every` (0: none), before the frame is
     // shown: a recording's frames are states after a fixed number of steps, whatever the frame rate.
-    void watchSteps(int every, std::function<void()> atStep);
+    // At the automatic pace a frame takes no more steps once `ready` says the watcher cannot take a state
+    // without waiting (an encoder behind): the frame is shown on time and the encoder catches up in the
+    // time it leaves, rather than the window's thread waiting inside the step loop.
+    void watchSteps(int every, std::function<void()> atStep, std::function<bool()> ready = {});
 
     // Applies parameter values (all or nothing). Returns the error naming the key, or empty.
     QString setParameters(const ParamValues& values);
@@ -166,6 +169,7 @@ private:
     long long stepsSinceClock_ = 0;
     int watchEvery_ = 0;
     std::function<void()> watch_;
+    std::function<bool()> watchReady_;
     double simulatedSinceClock_ = 0.0;
     // Automatic pace: the wall clock between frames, the simulated time the watchable rate still allows,
     // and the measured cost of one step [ns] (0 until measured).

@@ -233,7 +233,12 @@ int main(int argc, char** argv) {
                         qPrintable(pl::ui::FrameProfile::instance().report()));
             std::fflush(stdout);
             window.document()->setModified(false);
-            QApplication::quit();
+            // A clip still encoding its queued frames is finished before the window goes.
+            if (window.recorder()->isDraining())
+                QObject::connect(window.recorder(), &pl::ui::AppRecorder::finished, &app,
+                                 &QApplication::quit);
+            else
+                QApplication::quit();
         });
     }
     return QApplication::exec();

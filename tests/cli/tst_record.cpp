@@ -367,6 +367,43 @@ private slots:
         QCOMPARE(ffprobe(out).frames, encoded);
     }
 
+    // At the automatic pace an encoder that falls behind holds the steps, not the window: once its queue is
+    // full a frame takes no more steps and is shown on time, and every step still gives its clip frame.
+    // (Waiting for room inside the step loop made each frame as long as a 4K VP9 frame's encoding.)
+    void aSlowEncoderHoldsTheAutomaticPaceNotTheWindow() {
+        QTemporaryDir dir;
+        pl::ui::SimulationController controller;
+        controller.setBackend(pl::gl::Backend::Cpu);
+        QVERIFY(controller.load(pl::loadPreset("gas-classroom")).isEmpty());
+        controller.setAutomaticPace();
+        pl::ui::AppRecorder recorder(&controller);
+        pl::ui::AppClipOptions options;
+        options.size = QSize(3840, 2160);
+        options.stepsPerFrame = 1;
+        QVERIFY(recorder.start(dir.filePath("behind.webm"), "gas-classroom", options).isEmpty());
+        const long long first = controller.model()->stepCount();
+        qint64 longest = 0;
+        QElapsedTimer clock;
+        for (int frame = 0; frame < 30; ++frame) {
+            QTest::qWait(16); // a 60 Hz frame's wall time, for the pace to allow its steps
+            clock.start();
+            controller.advanceFrame();
+            longest = std::max(longest, clock.elapsed());
+        }
+        const long long steps = controller.model()->stepCount() - first;
+        const long long queued = recorder.isRecording() ? recorder.frames() : -1;
+        QSignalSpy finished(&recorder, &pl::ui::AppRecorder::finished);
+        recorder.stop();
+        recorder.cancelDraining();
+        QVERIFY(finished.count() == 1 || finished.wait(60000));
+        qInfo("30 frames beside a 4K VP9 encoder: %lld steps, the longest frame %lld ms", steps, longest);
+        QCOMPARE(queued, steps + 1); // a clip frame after every step: none dropped
+        QVERIFY2(steps > 0, "the scene went on");
+        // The step share of a frame and one clip frame's capture, with room for a loaded machine; one
+        // frame encoded at 4K takes about a second here.
+        QVERIFY2(longest < 250, qPrintable(QString::number(longest)));
+    }
+
     void gifLoopsForEver() {
         QTemporaryDir dir;
         const QString out = dir.filePath("clip.gif");

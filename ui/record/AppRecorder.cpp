@@ -85,9 +85,9 @@ QString AppRecorder::start(const QString& path, const QString& title, const AppC
         if (!plot_) return tr("The scene has no plot '%1'.").arg(options.plot);
     }
     try {
-        writer_ =
-            std::make_unique<ClipWriter>(path.toStdString(), options.size.width(), options.size.height(),
-                                         options.fps, colourScaleHints(model->sceneView()), queueLimit());
+        writer_ = std::make_unique<ClipWriter>(
+            path.toStdString(), options.size.width(), options.size.height(), options.fps,
+            colourScaleHints(model->sceneView()), queueLimit(), EncoderShare::BesideLiveScene);
     } catch (const VideoError& e) {
         plot_.reset();
         return QString::fromStdString(e.what());
@@ -96,7 +96,8 @@ QString AppRecorder::start(const QString& path, const QString& title, const AppC
     problem_.clear();
     frames_ = 0;
     capture(); // the first frame: the state as it is now
-    controller_->watchSteps(options_.stepsPerFrame, [this] { capture(); });
+    controller_->watchSteps(
+        options_.stepsPerFrame, [this] { capture(); }, [this] { return !writer_ || writer_->hasRoom(); });
     emit recordingChanged(true);
     return {};
 }

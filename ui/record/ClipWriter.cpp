@@ -1,14 +1,29 @@
 // ClipWriter: one worker per clip; the queue is the only state the two threads share.
 #include "ClipWriter.h"
 
+#include <sys/resource.h>
+#include <unistd.h>
+
 #include <algorithm>
 
 namespace pl::ui {
 
+namespace {
+// The worker's nice value beside a live scene: the scheduler serves the scene's threads (nice 0) first
+// and the worker on what they leave, while a worker that falls behind still gets a share of a busy core.
+constexpr int kBesideSceneNice = 10;
+
+void serveAfterTheScene() {
+    // Linux keeps a nice value per thread (setpriority(2)); raising it needs no privilege. Where it fails
+    // the worker simply runs at the scene's priority.
+    ::setpriority(PRIO_PROCESS, static_cast<id_t>(::gettid()), kBesideSceneNice);
+}
+} // namespace
+
 ClipWriter::ClipWriter(const std::string& path, int width, int height, int fps,
-                       std::vector<QRgb> paletteHints, std::size_t queueFrames)
-    : encoder_(path, width, height, fps, std::move(paletteHints)),
-      capacity_(std::max<std::size_t>(1, queueFrames)), worker_([this] { run(); }) {}
+                       std::vector<QRgb> paletteHints, std::size_t queueFrames, EncoderShare share)
+    : encoder_(path, width, height, fps, std::move(paletteHints), share),
+      capacity_(std::max<std::size_t>(1, queueFrames)), share_(share), worker_([this] { run(); }) {}
 
 ClipWriter::~ClipWriter() {
     try {
@@ -18,28 +33,38 @@ ClipWriter::~ClipWriter() {
 }
 
 void ClipWriter::run() {
-    bool failed = false; // the worker's own copy of "error_ is set", read without the lock
+    if (share_ == EncoderShare::BesideLiveScene) serveAfterTheScene();
     for (;;) {
-        std::function<QImage()> draw;
         {
             std::unique_lock lock(mutex_);
             changed_.wait(lock, [this] { return !queue_.empty() || closing_; });
-            if (queue_.empty()) return; // closing, and everything was encoded
-            draw = queue_.front();
+            // Closing beside a live scene: finish() encodes the rest at its caller's priority.
+            if (queue_.empty() || (closing_ && share_ == EncoderShare::BesideLiveScene)) return;
         }
-        std::exception_ptr error;
-        try {
-            if (!failed) encoder_.write(draw());
-        } catch (...) {
-            error = std::current_exception();
-            failed = true;
-        }
-        std::lock_guard lock(mutex_);
-        if (error) error_ = error;
-        queue_.pop_front();
-        if (!failed) written_ = encoder_.framesWritten();
-        changed_.notify_all();
+        encodeFront();
     }
+}
+
+bool ClipWriter::encodeFront() {
+    std::function<QImage()> draw;
+    {
+        std::lock_guard lock(mutex_);
+        if (queue_.empty()) return false;
+        draw = queue_.front(); // stays queued while it is encoded: dropWaiting() keeps the first
+    }
+    std::exception_ptr error;
+    try {
+        if (!failed_) encoder_.write(draw());
+    } catch (...) {
+        error = std::current_exception();
+        failed_ = true;
+    }
+    std::lock_guard lock(mutex_);
+    if (error) error_ = error;
+    queue_.pop_front();
+    if (!failed_) written_ = encoder_.framesWritten();
+    changed_.notify_all();
+    return true;
 }
 
 void ClipWriter::rethrow() {
@@ -71,6 +96,8 @@ void ClipWriter::finish(bool dropQueued) {
         changed_.notify_all();
     }
     worker_.join();
+    while (encodeFront()) {
+    }
     std::exception_ptr error;
     {
         std::lock_guard lock(mutex_);
@@ -93,6 +120,11 @@ void ClipWriter::dropQueued() {
 long long ClipWriter::framesWritten() const {
     std::lock_guard lock(mutex_);
     return written_;
+}
+
+bool ClipWriter::hasRoom() const {
+    std::lock_guard lock(mutex_);
+    return queue_.size() < capacity_;
 }
 
 long long ClipWriter::framesQueued() const {

@@ -1,6 +1,9 @@
 // A VideoEncoder on a thread of its own: the caller hands over frames and goes on stepping and drawing
 // while the previous frames are converted and encoded. At most kClipQueueFrames wait; a caller that is
-// faster than the encoder waits for room, so memory stays bounded and no frame is dropped.
+// faster than the encoder waits for room (or asks hasRoom() first), so memory stays bounded and no frame
+// is dropped. Beside a live scene the worker runs at a lower priority, so the encoder takes the time the
+// scene leaves rather than the scene's; what is still queued at finish() is encoded on the caller's
+// thread, at the caller's priority, so a user waiting for the clip never waits for the leftovers.
 #pragma once
 
 #include "VideoEncoder.h"
@@ -22,7 +25,7 @@ public:
     // Opens the clip at once (so an unwritable file or refused size throws VideoError here). queueFrames:
     // how many frames may wait for the encoder before write() waits for room.
     ClipWriter(const std::string& path, int width, int height, int fps, std::vector<QRgb> paletteHints = {},
-               std::size_t queueFrames = kClipQueueFrames);
+               std::size_t queueFrames = kClipQueueFrames, EncoderShare share = EncoderShare::Alone);
     ~ClipWriter(); // finishes the clip
     ClipWriter(const ClipWriter&) = delete;
     ClipWriter& operator=(const ClipWriter&) = delete;
@@ -41,10 +44,12 @@ public:
 
     long long framesWritten() const; // encoded and handed to the file
     long long framesQueued() const;  // handed over and not yet encoded
+    bool hasRoom() const;            // whether write() would return without waiting
     std::string codecDescription() const { return encoder_.codecDescription(); }
 
 private:
     void run();
+    bool encodeFront(); // the first queued frame; false when none is queued
     void rethrow();
     void dropWaiting(); // with the lock held
 
@@ -53,7 +58,9 @@ private:
     std::condition_variable changed_;
     std::deque<std::function<QImage()>> queue_;
     std::size_t capacity_;
+    EncoderShare share_;
     bool closing_ = false, finished_ = false;
+    bool failed_ = false; // the encoding thread's own copy of "an error was met", read without the lock
     long long written_ = 0;
     std::exception_ptr error_;
     std::thread worker_;

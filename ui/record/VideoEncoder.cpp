@@ -76,7 +76,7 @@ struct VideoEncoder::Impl {
 };
 
 VideoEncoder::VideoEncoder(const std::string& path, int width, int height, int fps,
-                           std::vector<QRgb> paletteHints)
+                           std::vector<QRgb> paletteHints, EncoderShare share)
     : d_(std::make_unique<Impl>()), width_(width), height_(height), fps_(fps),
       paletteHints_(std::move(paletteHints)) {
     const auto format = clipFormatOf(path);
@@ -112,19 +112,20 @@ VideoEncoder::VideoEncoder(const std::string& path, int width, int height, int f
     c->height = height;
     c->time_base = AVRational{1, fps};
     c->framerate = AVRational{fps, 1};
-    c->gop_size = fps;   // a key frame (and an MP4 fragment) every second
-    c->thread_count = 0; // the encoder's own choice of threads
+    c->gop_size = fps; // a key frame (and an MP4 fragment) every second
+    const bool alone = share == EncoderShare::Alone;
+    c->thread_count = alone ? 0 : 1; // 0: the encoder's own choice of threads
     c->pix_fmt = format_ == ClipFormat::Gif ? AV_PIX_FMT_PAL8 : AV_PIX_FMT_YUV420P;
     if (d_->format->oformat->flags & AVFMT_GLOBALHEADER) c->flags |= AV_CODEC_FLAG_GLOBAL_HEADER;
     AVDictionary* options = nullptr;
     if (d_->codecName == "libx264") {
-        av_dict_set(&options, "preset", "veryfast", 0);
+        av_dict_set(&options, "preset", alone ? "veryfast" : "ultrafast", 0);
         av_dict_set_int(&options, "crf", kX264Crf, 0);
     } else if (d_->codecName == "libvpx-vp9") {
         c->bit_rate = 0; // constant quality
         av_dict_set(&options, "deadline", "realtime", 0);
         av_dict_set_int(&options, "cpu-used", kVp9CpuUsed, 0);
-        av_dict_set_int(&options, "row-mt", 1, 0);
+        av_dict_set_int(&options, "row-mt", alone ? 1 : 0, 0);
         av_dict_set_int(&options, "tile-columns", 2, 0); // log2: 4 columns, encoded side by side
         av_dict_set_int(&options, "crf", kVp9Crf, 0);
     }

@@ -21,14 +21,21 @@ public:
     using std::runtime_error::runtime_error;
 };
 
+// Whose machine the encoder works on. A headless recording has it to itself: the encoder picks its own
+// threads and x264 its "veryfast" preset. The app's recording shares it with the live scene: one thread
+// (the clip's worker, which the scheduler serves after the scene) and x264's "ultrafast" preset, which
+// needs under a third of "veryfast"'s time for a 720p frame at the same CRF and writes a file about three
+// times larger (BENCHMARKS.md, "Recording beside the live scene").
+enum class EncoderShare { Alone, BesideLiveScene };
+
 class VideoEncoder {
 public:
     // Opens path for a clip of width × height pixels at fps frames per second in the format of its
     // suffix (clipFormatOf, sizes checked by clipSizeRefusal). paletteHints: colours a GIF's palette
     // keeps besides those of its first frame (a scene's colour scale, whose hot end may come later).
     // Throws VideoError.
-    VideoEncoder(const std::string& path, int width, int height, int fps,
-                 std::vector<QRgb> paletteHints = {});
+    VideoEncoder(const std::string& path, int width, int height, int fps, std::vector<QRgb> paletteHints = {},
+                 EncoderShare share = EncoderShare::Alone);
     ~VideoEncoder(); // finishes the clip if finish() was not called
     VideoEncoder(const VideoEncoder&) = delete;
     VideoEncoder& operator=(const VideoEncoder&) = delete;
