@@ -1,4 +1,4 @@
-// The λ pass's block loop in SSE2 and in AVX (FluidLambdaPass.h).
+// The λ pass's block loop in SSE2, AVX and AVX-512 (FluidLambdaPass.h).
 #include "FluidLambdaPass.h"
 
 #include <algorithm>
@@ -143,6 +143,92 @@ __attribute__((target("avx"))) void avxBlocks(const LambdaArrays& a, const Lambd
         finishBlock(a, c, pair, s);
     }
 }
+
+#pragma GCC diagnostic push
+// GCC 12's AVX-512 intrinsics pass an "undefined" vector as the merge source their full mask never
+// reads, and -Wmaybe-uninitialized reports it.
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+// Eight pairs: slots t … t + 3, two lanes each, slot t in the lowest 128 bits. AVX-512F alone (no DQ):
+// the support test is a mask, and a masked move zeroes what lies outside it as the AVX build's AND does.
+struct Oct {
+    __m512d v;
+};
+
+__attribute__((target("avx512f"))) inline Oct octAll(Lanes a) {
+    return {_mm512_castps_pd(_mm512_broadcast_f32x4(_mm_castpd_ps(a.v)))}; // the 128 bits four times
+}
+__attribute__((target("avx512f"))) inline Oct octGather(const double* p, const std::uint32_t* j) {
+    return {_mm512_set_pd(p[j[7]], p[j[6]], p[j[5]], p[j[4]], p[j[3]], p[j[2]], p[j[1]], p[j[0]])};
+}
+// The slot-th 128 bits: one slot's two lanes.
+template <int slot> __attribute__((target("avx512f"))) inline Lanes slotOf(__m512d v) {
+    return {_mm_castps_pd(_mm512_extractf32x4_ps(_mm512_castpd_ps(v), slot))};
+}
+
+// The four slots' values added to a sum in slot order, as the one-slot loop adds them.
+__attribute__((target("avx512f"))) inline void addSlotSums(Lanes& sum, __m512d v) {
+    sum += slotOf<0>(v);
+    sum += slotOf<1>(v);
+    sum += slotOf<2>(v);
+    sum += slotOf<3>(v);
+}
+
+// addSlot for slots e/2 … e/2 + 3 at once: the same operations per pair, then the sums in slot order.
+__attribute__((target("avx512f"))) void addFourSlots(const LambdaArrays& a, const LaneKernels& k, Oct xi,
+                                                     Oct yi, std::size_t e, BlockSums& s) {
+    const __m512d dx = _mm512_sub_pd(xi.v, octGather(a.px, a.lanes + e).v);
+    const __m512d dy = _mm512_sub_pd(yi.v, octGather(a.py, a.lanes + e).v);
+    const __m512d r2 = _mm512_add_pd(_mm512_mul_pd(dx, dx), _mm512_mul_pd(dy, dy));
+    // Lanes::insideSupport: not (r2 ≥ h² or r2 ≤ 0), NaN counting as inside.
+    const __m512d h2 = octAll(k.h2).v;
+    const __mmask8 inside =
+        _mm512_cmp_pd_mask(r2, h2, _CMP_NGE_UQ) & _mm512_cmp_pd_mask(r2, _mm512_setzero_pd(), _CMP_NLE_UQ);
+    const __m512d d = _mm512_sub_pd(h2, r2);
+    const __m512d w =
+        _mm512_maskz_mov_pd(inside, _mm512_mul_pd(_mm512_mul_pd(_mm512_mul_pd(octAll(k.poly6).v, d), d), d));
+    const __m512d r = _mm512_sqrt_pd(r2);
+    const __m512d hr = _mm512_sub_pd(octAll(k.h).v, r);
+    const __m512d f = _mm512_maskz_mov_pd(
+        inside, _mm512_div_pd(_mm512_mul_pd(_mm512_mul_pd(octAll(k.minusSpikyGrad).v, hr), hr), r));
+    __m512d p = _mm512_setzero_pd();
+    if (k.scorr) {
+        const __m512d ratio = _mm512_mul_pd(w, octAll(k.inverseReference).v);
+        p = ratio;
+        for (int n = 1; n < k.n; ++n) p = _mm512_mul_pd(p, ratio);
+        p = _mm512_mul_pd(octAll(k.minusK).v, p);
+    }
+    const __m512d fx = _mm512_mul_pd(f, dx), fy = _mm512_mul_pd(f, dy);
+    _mm512_storeu_pd(a.pairGradX + e, fx);
+    _mm512_storeu_pd(a.pairGradY + e, fy);
+    const __m512d pf = _mm512_mul_pd(p, f);
+    addSlotSums(s.rho, w);
+    addSlotSums(s.gx, fx);
+    addSlotSums(s.gy, fy);
+    addSlotSums(s.sx, _mm512_mul_pd(pf, dx));
+    addSlotSums(s.sy, _mm512_mul_pd(pf, dy));
+    addSlotSums(s.sumSquares, _mm512_mul_pd(_mm512_mul_pd(f, f), r2));
+}
+
+__attribute__((target("avx512f"))) void avx512Blocks(const LambdaArrays& a, const LambdaConstants& c,
+                                                     long long first, long long last) {
+    for (long long b = first; b < last; ++b) {
+        const BlockPair pair(b, a.count);
+        const Lanes xi = pair.gather(a.px), yi = pair.gather(a.py);
+        const Oct xo = octAll(xi), yo = octAll(yi);
+        const Quad xq = quadAll(xi), yq = quadAll(yi);
+        BlockSums s = startBlock(c);
+        std::size_t e = 2 * std::size_t{a.blockStart[b]};
+        const std::size_t end = 2 * std::size_t{a.blockStart[b + 1]};
+        for (; e + 8 <= end; e += 8) addFourSlots(a, c.kernels, xo, yo, e, s);
+        if (e + 4 <= end) {
+            addTwoSlots(a, c.kernels, xq, yq, e, s);
+            e += 4;
+        }
+        if (e < end) addSlot(a, c.kernels, xi, yi, e, s);
+        finishBlock(a, c, pair, s);
+    }
+}
+#pragma GCC diagnostic pop
 #endif
 
 } // namespace
@@ -159,8 +245,18 @@ LambdaBlocksFunction lambdaBlocksAvx() {
     return nullptr;
 }
 
+LambdaBlocksFunction lambdaBlocksAvx512() {
+#if PARTICLELAB_FLUID_AVX
+    static const bool avx512 = __builtin_cpu_supports("avx512f");
+    if (avx512) return avx512Blocks;
+#endif
+    return nullptr;
+}
+
 LambdaBlocksFunction lambdaBlocks() {
-    static const LambdaBlocksFunction chosen = lambdaBlocksAvx() ? lambdaBlocksAvx() : lambdaBlocksSse2();
+    static const LambdaBlocksFunction chosen = lambdaBlocksAvx512() ? lambdaBlocksAvx512()
+                                               : lambdaBlocksAvx()  ? lambdaBlocksAvx()
+                                                                    : lambdaBlocksSse2();
     return chosen;
 }
 

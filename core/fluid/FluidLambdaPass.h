@@ -1,10 +1,12 @@
-// The λ pass's loop over lane-pair blocks (FluidModel::computeLambdas), in two builds: the SSE2 one of
-// common/Lanes.h, and one that evaluates two slots of a block (four pairs) per AVX instruction where the
-// CPU has AVX. The square root and the division set this pass's speed (BENCHMARKS.md, "Limits"), and a
-// 256-bit vsqrtpd or vdivpd costs about what a 128-bit one does. Every pair gets exactly the scalar
-// operations (no FMA: the AVX build does not enable it; AVX square roots and divisions are correctly
-// rounded), and the sums still add slot by slot in row order, so the results are bit-identical to the
-// SSE2 loop and to the scalar code.
+// The λ pass's loop over lane-pair blocks (FluidModel::computeLambdas), in three builds: the SSE2 one of
+// common/Lanes.h, one that evaluates two slots of a block (four pairs) per AVX instruction where the CPU
+// has AVX, and one that evaluates four slots (eight pairs) per AVX-512 instruction where it has AVX-512F.
+// The square root and the division set this pass's speed (BENCHMARKS.md, "Limits"): a 256-bit vsqrtpd or
+// vdivpd costs about what a 128-bit one does, and on a CPU with a full 512-bit datapath (AMD Zen 5) a
+// 512-bit one again the same. Every pair gets exactly the scalar operations (no FMA: this file is
+// compiled with -ffp-contract=off, and the vector square roots and divisions are correctly rounded), and
+// the sums still add slot by slot in row order, so the results are bit-identical to the SSE2 loop and to
+// the scalar code.
 #pragma once
 
 #include "FluidKernels.h"
@@ -40,8 +42,9 @@ struct LambdaConstants {
 using LambdaBlocksFunction = void (*)(const LambdaArrays&, const LambdaConstants&, long long first,
                                       long long last);
 LambdaBlocksFunction lambdaBlocks();
-// Each build by name, for the test that compares them: the AVX one is nullptr where the CPU lacks AVX.
+// Each build by name, for the test that compares them: a wide one is nullptr where the CPU lacks it.
 LambdaBlocksFunction lambdaBlocksSse2();
 LambdaBlocksFunction lambdaBlocksAvx();
+LambdaBlocksFunction lambdaBlocksAvx512();
 
 } // namespace pl::fluid

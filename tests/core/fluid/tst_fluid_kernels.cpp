@@ -105,17 +105,24 @@ private slots:
         QCOMPARE(s(0.0), 0.0);
     }
 
-    // The λ pass in AVX (two slots of a block per instruction) gives the SSE2 pass's bits: blocks of 0 to 9
-    // slots (odd and even, so the AVX loop's one-slot tail runs), padded slots (the particle itself),
-    // pairs inside and beyond h, a coincident pair, an odd particle count, with and without s_corr.
-    void lambdaPassAvxGivesTheSse2Bits_data() {
+    // The λ pass in AVX (two slots of a block per instruction) and in AVX-512 (four) gives the SSE2 pass's
+    // bits: blocks of 0 to 9 slots (so the wide loops' tails of one to three slots run), padded slots (the
+    // particle itself), pairs inside and beyond h, a coincident pair, an odd particle count, with and
+    // without s_corr.
+    void lambdaPassWideBuildsGiveTheSse2Bits_data() {
+        QTest::addColumn<QString>("build");
         QTest::addColumn<double>("scorrK");
-        QTest::newRow("s_corr on") << 0.001;
-        QTest::newRow("s_corr off") << 0.0;
+        for (const char* build : {"AVX", "AVX-512"}) {
+            QTest::addRow("%s, s_corr on", build) << QString(build) << 0.001;
+            QTest::addRow("%s, s_corr off", build) << QString(build) << 0.0;
+        }
     }
-    void lambdaPassAvxGivesTheSse2Bits() {
+    void lambdaPassWideBuildsGiveTheSse2Bits() {
+        QFETCH(QString, build);
         QFETCH(double, scorrK);
-        if (!fluid::lambdaBlocksAvx()) QSKIP("this CPU has no AVX: the SSE2 pass is the only one");
+        const fluid::LambdaBlocksFunction wide =
+            build == "AVX" ? fluid::lambdaBlocksAvx() : fluid::lambdaBlocksAvx512();
+        if (!wide) QSKIP("this CPU lacks the instructions: the SSE2 pass runs instead");
         const double h = 1.1;
         const auto kernels = fluid::Kernels::make(h, FluidKernelConstants::Unnormalised3d, false);
         const double dq = 0.3 * h;
@@ -162,7 +169,7 @@ private slots:
             blocksFunction(arrays, constants, 0, blocks);
             return o;
         };
-        const Outputs sse2 = run(fluid::lambdaBlocksSse2()), avx = run(fluid::lambdaBlocksAvx());
+        const Outputs sse2 = run(fluid::lambdaBlocksSse2()), avx = run(wide);
         int inside = 0, pairs = 0; // the case has pairs inside h and beyond it
         for (double g : sse2.values[0]) inside += g != 0.0, ++pairs;
         QVERIFY(inside > pairs / 3 && inside < pairs);
