@@ -1,15 +1,13 @@
 // Single-pass neighbour search into fixed-capacity rows, grown and repeated on overflow, and the two
 // packings of those rows (CSR for the observables, lane pairs for the solver).
 #include "FluidNeighbours.h"
+#include "FluidRowScan.h"
 
 #include "common/Parallel.h"
 
 #include <omp.h>
 
 #include <algorithm>
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
 
 namespace pl::fluid {
 
@@ -33,54 +31,21 @@ void Neighbours::search(const double* x, const double* y, std::size_t count, dou
         sortedY[k] = y[order[k]];
         rank[order[k]] = static_cast<std::uint32_t>(k);
     }
-    const double reach2 = reach * reach;
-    const int nx = cells_.cellsX(), ny = cells_.cellsY();
-    std::uint32_t* counts = counts_.data();
+    const RowScanFunction scan = rowScan(); // AVX-512 where the CPU has it
     for (;;) {
-        // One spare slot per row takes the writes past the capacity, so the scan below needs no branch
-        // per candidate; an overflow is seen in the count and the scan repeated with larger rows.
-        const std::uint32_t capacity = capacity_, stride = capacity_ + 1;
-        rows_.resize(count * stride);
-        std::uint32_t* rows = rows_.data();
-        std::uint32_t largest = 0;
+        // One spare slot per row takes the writes past the capacity, so the scan needs no branch per
+        // candidate; an overflow is seen in the count and the scan repeated with larger rows.
+        rows_.resize(count * (capacity_ + 1));
         // In solver numbers: row k lists the solver numbers of particle order[k]'s neighbours.
-#pragma omp parallel for schedule(static) reduction(max : largest) if (n >= kParallelMinParticles)
-        for (long long k = 0; k < n; ++k) {
-            const double xi = sortedX[k], yi = sortedY[k];
-            const auto self = static_cast<std::uint32_t>(k);
-            const std::uint32_t cell = cellOf[order[k]];
-            const int cx = static_cast<int>(cell % static_cast<std::uint32_t>(nx));
-            const int cy = static_cast<int>(cell / static_cast<std::uint32_t>(nx));
-            std::uint32_t* row = rows + static_cast<std::size_t>(k) * stride;
-            std::uint32_t found = 0;
-            for (int r = std::max(cy - 1, 0); r <= std::min(cy + 1, ny - 1); ++r) {
-                const std::uint32_t first = start[r * nx + std::max(cx - 1, 0)];
-                const std::uint32_t last = start[r * nx + std::min(cx + 1, nx - 1) + 1];
-                std::uint32_t m = first;
-#if defined(__SSE2__)
-                // Two candidates per SSE2 compare (each lane the scalar test's operations, so the same
-                // decisions), still written in cell order.
-                const __m128d x2 = _mm_set1_pd(xi), y2 = _mm_set1_pd(yi), reach2x2 = _mm_set1_pd(reach2);
-                for (; m + 2 <= last; m += 2) {
-                    const __m128d dx = _mm_sub_pd(x2, _mm_loadu_pd(sortedX + m));
-                    const __m128d dy = _mm_sub_pd(y2, _mm_loadu_pd(sortedY + m));
-                    const __m128d r2 = _mm_add_pd(_mm_mul_pd(dx, dx), _mm_mul_pd(dy, dy));
-                    const auto within =
-                        static_cast<std::uint32_t>(_mm_movemask_pd(_mm_cmpnge_pd(r2, reach2x2)));
-                    row[std::min(found, capacity)] = m;
-                    found += (within & 1u) & static_cast<std::uint32_t>(m != self);
-                    row[std::min(found, capacity)] = m + 1;
-                    found += (within >> 1) & static_cast<std::uint32_t>(m + 1 != self);
-                }
-#endif
-                for (; m < last; ++m) {
-                    const double dx = xi - sortedX[m], dy = yi - sortedY[m];
-                    row[std::min(found, capacity)] = m;
-                    found += static_cast<std::uint32_t>(!(dx * dx + dy * dy >= reach2) & (m != self));
-                }
-            }
-            counts[k] = found;
-            largest = std::max(largest, found);
+        const RowScanInputs in{sortedX,   sortedY,         order,           cellOf,
+                               start,     cells_.cellsX(), cells_.cellsY(), reach * reach,
+                               capacity_, rows_.data(),    counts_.data()};
+        std::uint32_t largest = 0;
+#pragma omp parallel reduction(max : largest) if (n >= kParallelMinParticles)
+        {
+            // schedule(static)'s shares: one contiguous stretch of rows per thread.
+            const long long threads = omp_get_num_threads(), thread = omp_get_thread_num();
+            largest = scan(in, n * thread / threads, n * (thread + 1) / threads);
         }
         if (largest <= capacity_) break;
         capacity_ = largest + largest / 4; // rare: a denser clump than ever before

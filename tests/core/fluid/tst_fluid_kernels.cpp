@@ -1,9 +1,11 @@
 // The PBF kernels (docs/fluid.md#kernel-normalisation): the 2D constants integrate to 1 over the plane, the
 // write-up's 3D ones to 315/(256 h) and 3/(2 h); the spiky gradient is the derivative of the spiky kernel and
 // antisymmetric in the pair; s_corr is −k at r = Δq h.
+#include "common/CellList.h"
 #include "fluid/FluidKernels.h"
 #include "fluid/FluidLambdaPass.h"
 #include "fluid/FluidParams.h"
+#include "fluid/FluidRowScan.h"
 
 #include <QtTest>
 #include <cstring>
@@ -177,6 +179,77 @@ private slots:
             QVERIFY2(std::memcmp(sse2.values[a].data(), avx.values[a].data(),
                                  sse2.values[a].size() * sizeof(double)) == 0,
                      qPrintable(QString("output array %1 differs").arg(a)));
+    }
+
+    // The neighbour rows' scan in AVX-512 (eight candidates per compare, packed by a compress) writes the
+    // SSE2 scan's rows and counts: cells of 0 to ~12 particles (so every masked tail length runs), pairs
+    // exactly at the radius, coincident pairs, the particle itself among its candidates, and a clump that
+    // overflows a small row capacity (the count is still exact, which is what makes the search repeat).
+    void rowScanAvx512GivesTheSse2Rows_data() {
+        QTest::addColumn<std::uint32_t>("capacity");
+        QTest::addColumn<bool>("overflows");
+        QTest::newRow("rows large enough") << std::uint32_t{64} << false;
+        QTest::newRow("rows that overflow") << std::uint32_t{16} << true;
+    }
+    void rowScanAvx512GivesTheSse2Rows() {
+        QFETCH(std::uint32_t, capacity);
+        QFETCH(bool, overflows);
+        if (!fluid::rowScanAvx512()) QSKIP("this CPU has no AVX-512F: the SSE2 scan is the only one");
+        const double reach = 1.0, width = 12.0, height = 9.0;
+        const std::size_t count = 500;
+        std::mt19937_64 random(11);
+        std::uniform_real_distribution<double> along(0.0, width), up(0.0, height), clump(4.0, 4.6);
+        std::vector<double> x(count), y(count);
+        for (std::size_t i = 0; i < count; ++i) {
+            const bool inClump = i % 25 == 0;
+            x[i] = inClump ? clump(random) : along(random);
+            y[i] = inClump ? clump(random) : up(random);
+        }
+        x[1] = x[0], y[1] = y[0];                              // coincident
+        x[3] = x[2] + reach, y[3] = y[2];                      // exactly at the radius: not a neighbour
+        x[5] = x[4] + std::nextafter(reach, 0.0), y[5] = y[4]; // just inside
+        CellList cells;
+        cells.configure(0.0, 0.0, width, height, reach);
+        cells.build(x.data(), y.data(), count);
+        std::vector<double> sortedX(count), sortedY(count);
+        for (std::size_t k = 0; k < count; ++k)
+            sortedX[k] = x[cells.order()[k]], sortedY[k] = y[cells.order()[k]];
+        auto run = [&](fluid::RowScanFunction scan, std::vector<std::uint32_t>& rows,
+                       std::vector<std::uint32_t>& counts) {
+            rows.assign(count * (capacity + 1), 0xFFFFFFFFu);
+            counts.assign(count, 0);
+            const fluid::RowScanInputs in{sortedX.data(),
+                                          sortedY.data(),
+                                          cells.order().data(),
+                                          cells.cellOfParticle().data(),
+                                          cells.cellStart().data(),
+                                          cells.cellsX(),
+                                          cells.cellsY(),
+                                          reach * reach,
+                                          capacity,
+                                          rows.data(),
+                                          counts.data()};
+            return scan(in, 0, static_cast<long long>(count));
+        };
+        std::vector<std::uint32_t> sse2Rows, sse2Counts, wideRows, wideCounts;
+        const std::uint32_t sse2Largest = run(fluid::rowScanSse2(), sse2Rows, sse2Counts);
+        const std::uint32_t wideLargest = run(fluid::rowScanAvx512(), wideRows, wideCounts);
+        QCOMPARE(wideLargest, sse2Largest);
+        QVERIFY(wideCounts == sse2Counts);
+        int overflowed = 0;
+        for (std::size_t k = 0; k < count; ++k) {
+            if (sse2Counts[k] > capacity) {
+                ++overflowed;
+                continue; // an overflowed row's entries are not used: the search repeats
+            }
+            const auto* a = sse2Rows.data() + k * (capacity + 1);
+            const auto* b = wideRows.data() + k * (capacity + 1);
+            QVERIFY2(std::equal(a, a + sse2Counts[k], b), qPrintable(QString("row %1 differs").arg(k)));
+        }
+        qInfo("largest row %u, %d of %zu rows past a capacity of %u", sse2Largest, overflowed, count,
+              capacity);
+        QCOMPARE(overflowed > 0, overflows);
+        QVERIFY(overflowed < static_cast<int>(count) / 2); // most rows are compared
     }
 };
 
