@@ -1,8 +1,9 @@
 // Neighbour lists for the fluid, rebuilt every step from the predicted positions (the paper's Algorithm 1
 // finds neighbours once per step and keeps them through the solver iterations): one branch-free pass per
-// particle over the 3×3 cell block into a fixed-capacity row (as a GPU kernel fills them), over
-// cell-ordered copies of the positions so each scanned block row is one contiguous read. The rows are then
-// packed either into CSR rows or into lane pairs for the two-wide pair passes of FluidSolver.cpp.
+// particle over the 3×3 cell block into a fixed-capacity row (FluidRowScan.h; as a GPU kernel fills
+// them), over cell-ordered copies of the positions so each scanned block row is one contiguous read. The
+// rows are then packed either into CSR rows or into lane pairs for the two-wide pair passes of
+// FluidSolver.cpp.
 //
 // Two numberings. Particle numbers are the model's (state order). Solver numbers are the particles in
 // cell order, particle order()[k] being solver particle k: there each thread's share of a pass is one
