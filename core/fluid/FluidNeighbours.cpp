@@ -43,7 +43,7 @@ void Neighbours::search(const double* x, const double* y, std::size_t count, dou
         std::uint32_t largest = 0;
 #pragma omp parallel reduction(max : largest) if (n >= kParallelMinParticles)
         {
-            // schedule(static)'s shares: one contiguous stretch of rows per thread.
+            // One contiguous stretch of rows per thread; each row is its own, so the split changes no bit.
             const long long threads = omp_get_num_threads(), thread = omp_get_thread_num();
             largest = scan(in, n * thread / threads, n * (thread + 1) / threads);
         }
