@@ -1,6 +1,8 @@
 // The λ pass's block loop in SSE2, AVX and AVX-512 (FluidLambdaPass.h).
 #include "FluidLambdaPass.h"
 
+#include "FluidAvx512.h"
+
 #include <algorithm>
 #if defined(__x86_64__) // SSE2 is the baseline there: Lanes holds an __m128d
 #include <immintrin.h>
@@ -148,30 +150,10 @@ __attribute__((target("avx"))) void avxBlocks(const LambdaArrays& a, const Lambd
 // GCC 12's AVX-512 intrinsics pass an "undefined" vector as the merge source their full mask never
 // reads, and -Wmaybe-uninitialized reports it.
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
-// Eight pairs: slots t … t + 3, two lanes each, slot t in the lowest 128 bits. AVX-512F alone (no DQ):
-// the support test is a mask, and a masked move zeroes what lies outside it as the AVX build's AND does.
-struct Oct {
-    __m512d v;
-};
-
-__attribute__((target("avx512f"))) inline Oct octAll(Lanes a) {
-    return {_mm512_castps_pd(_mm512_broadcast_f32x4(_mm_castpd_ps(a.v)))}; // the 128 bits four times
-}
-__attribute__((target("avx512f"))) inline Oct octGather(const double* p, const std::uint32_t* j) {
-    return {_mm512_set_pd(p[j[7]], p[j[6]], p[j[5]], p[j[4]], p[j[3]], p[j[2]], p[j[1]], p[j[0]])};
-}
-// The slot-th 128 bits: one slot's two lanes.
-template <int slot> __attribute__((target("avx512f"))) inline Lanes slotOf(__m512d v) {
-    return {_mm_castps_pd(_mm512_extractf32x4_ps(_mm512_castpd_ps(v), slot))};
-}
-
-// The four slots' values added to a sum in slot order, as the one-slot loop adds them.
-__attribute__((target("avx512f"))) inline void addSlotSums(Lanes& sum, __m512d v) {
-    sum += slotOf<0>(v);
-    sum += slotOf<1>(v);
-    sum += slotOf<2>(v);
-    sum += slotOf<3>(v);
-}
+using avx512::addSlotSums;
+using avx512::Oct;
+using avx512::octAll;
+using avx512::octGather;
 
 // addSlot for slots e/2 … e/2 + 3 at once: the same operations per pair, then the sums in slot order.
 __attribute__((target("avx512f"))) void addFourSlots(const LambdaArrays& a, const LaneKernels& k, Oct xi,
