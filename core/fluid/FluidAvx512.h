@@ -1,5 +1,5 @@
-// Four lane-pair slots in one AVX-512 register, for the fluid's AVX-512 pair passes (FluidLambdaPass.cpp):
-// slot t's two lanes in the lowest 128 bits, slot t + 3's in the highest. Only
+// Four lane-pair slots in one AVX-512 register, for the fluid's AVX-512 pair passes
+// (FluidLambdaPass.cpp): slot t's two lanes in the lowest 128 bits, slot t + 3's in the highest. Only
 // AVX-512F is assumed (no DQ or VL). Each function is compiled for AVX-512F alone; the callers choose
 // them at run time, and only where the CPU has it.
 #pragma once
