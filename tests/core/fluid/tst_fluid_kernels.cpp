@@ -1,6 +1,7 @@
 // The PBF kernels (docs/fluid.md#kernel-normalisation): the 2D constants integrate to 1 over the plane, the
 // write-up's 3D ones to 315/(256 h) and 3/(2 h); the spiky gradient is the derivative of the spiky kernel and
-// antisymmetric in the pair; s_corr is −k at r = Δq h.
+// antisymmetric in the pair; s_corr is −k at r = Δq h. The λ pass's and the neighbour scan's wide builds
+// (AVX, AVX-512) give the SSE2 builds' bits.
 #include "common/CellList.h"
 #include "fluid/FluidKernels.h"
 #include "fluid/FluidLambdaPass.h"
@@ -183,7 +184,7 @@ private slots:
 
     // The neighbour rows' scan in AVX-512 (eight candidates per compare, packed by a compress) writes the
     // SSE2 scan's rows and counts: cells of 0 to ~12 particles (so every masked tail length runs), pairs
-    // exactly at the radius, coincident pairs, the particle itself among its candidates, and a clump that
+    // at the radius to rounding, coincident pairs, the particle itself among its candidates, and a clump that
     // overflows a small row capacity (the count is still exact, which is what makes the search repeat).
     void rowScanAvx512GivesTheSse2Rows_data() {
         QTest::addColumn<std::uint32_t>("capacity");
@@ -206,8 +207,8 @@ private slots:
             y[i] = inClump ? clump(random) : up(random);
         }
         x[1] = x[0], y[1] = y[0];                              // coincident
-        x[3] = x[2] + reach, y[3] = y[2];                      // exactly at the radius: not a neighbour
-        x[5] = x[4] + std::nextafter(reach, 0.0), y[5] = y[4]; // just inside
+        x[3] = x[2] + reach, y[3] = y[2];                      // at the radius, to rounding
+        x[5] = x[4] + std::nextafter(reach, 0.0), y[5] = y[4]; // a rounding inside it
         CellList cells;
         cells.configure(0.0, 0.0, width, height, reach);
         cells.build(x.data(), y.data(), count);
