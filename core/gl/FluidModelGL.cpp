@@ -15,26 +15,34 @@ namespace {
 
 constexpr unsigned kStreamLocal = 256, kPairLocal = 128;
 constexpr std::int64_t kHealthInterval = 64;
-// Cells of side h/2 searched 2 cells out: a dense fluid puts about one particle in each, and the 5×5
-// stencil holds ~25 candidates for ~13 neighbours within h (3×3 cells of side h: ~36; cells sized for
-// two particles each, as for the sparse gas: ~110).
+// Cells of half the search radius (1.05 h / 2) searched 2 cells out: a dense fluid puts about one particle
+// in each, and the 5×5 stencil holds ~25 candidates for ~14 neighbours (3×3 cells of side 1.05 h: ~36;
+// cells sized for two particles each, as for the sparse gas: ~110). The search runs once a step
+// (fluid_neighbours.comp); the pair passes walk its list.
 constexpr int kCellReach = 2;
 constexpr double kParticlesPerCell = 0.1;
+// Neighbours each particle's list holds (fluid_neighbours.comp): ~14 within 1.05 h in a fluid at rest.
+// A particle with more walks its cells instead, and the list grows at the next health check to a
+// quarter above the most seen, up to the largest, past which the few such particles keep walking cells.
+constexpr unsigned kFirstNeighbourCapacity = 32, kLargestNeighbourCapacity = 96;
 
 } // namespace
 
 struct FluidGpu {
-    ComputeProgram predict{"fluid/fluid_predict.comp"}, lambda{"fluid/fluid_lambda.comp"},
-        correct{"fluid/fluid_correct.comp"}, velocity{"fluid/fluid_velocity.comp"},
-        vorticity{"fluid/fluid_vorticity.comp"}, xsph{"fluid/fluid_xsph.comp"};
+    ComputeProgram predict{"fluid/fluid_predict.comp"}, neighbours{"fluid/fluid_neighbours.comp"},
+        lambda{"fluid/fluid_lambda.comp"}, correct{"fluid/fluid_correct.comp"},
+        velocity{"fluid/fluid_velocity.comp"}, vorticity{"fluid/fluid_vorticity.comp"},
+        xsph{"fluid/fluid_xsph.comp"};
     GpuCellGrid grid;
     // Cell-ordered state: positions x, velocities v (ping-pong across the sort), predictions p and
-    // their Jacobi partner, λ, ω and a velocity scratch buffer.
+    // their Jacobi partner, λ, ω and a velocity scratch buffer; the step's neighbours of each particle.
     Buffer x[2], v[2], p, pNext, lambdaBuffer, omega, vScratch, slots, status, errorSums, obstacles;
+    Buffer neighbourCounts, neighbourList;
     int current = 0;
     std::size_t count = 0;
-    std::size_t errorGroups = 0; // λ groups per iteration in errorSums
-    bool errorsCurrent = true;   // errorMean_ and errorMax_ hold the last GPU step's errors
+    unsigned neighbourCapacity = kFirstNeighbourCapacity; // entries per particle in neighbourList
+    std::size_t errorGroups = 0;                          // λ groups per iteration in errorSums
+    bool errorsCurrent = true; // errorMean_ and errorMax_ hold the last GPU step's errors
     int dispatches = 0;
 };
 
@@ -61,6 +69,10 @@ FluidModelGL::~FluidModelGL() {
 
 int FluidModelGL::dispatchesLastStep() const {
     return gpu_->dispatches;
+}
+
+unsigned FluidModelGL::neighbourListLength() const {
+    return gpu_->neighbourCapacity;
 }
 
 void FluidModelGL::finishPendingWork() const {
@@ -97,10 +109,10 @@ void FluidModelGL::upload() {
     g.x[0].uploadVector(x);
     g.v[0].uploadVector(v);
     for (Buffer* b : {&g.x[1], &g.v[1], &g.p, &g.pNext, &g.vScratch, &g.slots}) b->reserve(n * 8);
-    for (Buffer* b : {&g.lambdaBuffer, &g.omega}) b->reserve(n * 4);
-    // Cells at least as wide as the kernel support (the CPU's search radius only adds pairs beyond h,
-    // where every kernel is zero).
-    g.grid.configure(0.0, 0.0, params_.boxWidth, params_.boxHeight, params_.h / kCellReach, n,
+    for (Buffer* b : {&g.lambdaBuffer, &g.omega, &g.neighbourCounts}) b->reserve(n * 4);
+    g.neighbourList.reserve(std::size_t(g.neighbourCapacity) * n * 4);
+    // Cells of at least half the search radius: the 5 × 5 cells around a particle hold its neighbours.
+    g.grid.configure(0.0, 0.0, params_.boxWidth, params_.boxHeight, params_.neighbourRadius() / kCellReach, n,
                      kParticlesPerCell);
 }
 
@@ -150,6 +162,7 @@ void FluidModelGL::setCommonUniforms(ComputeProgram& p) const {
     p.set("inverseRest", float(1.0 / restDensity_));
     g.grid.setUniforms(p);
     p.set("cellReach", kCellReach);
+    p.set("neighbourCapacity", g.neighbourCapacity);
 }
 
 void FluidModelGL::advance(double /*h*/) { // h = dt, as FluidModel::advance
@@ -193,11 +206,25 @@ void FluidModelGL::advance(double /*h*/) { // h = dt, as FluidModel::advance
     g.current = 1 - g.current;
     g.dispatches += 2 + g.grid.scanDispatches();
 
+    // Lines 5–7: each particle's neighbours, read by every pair pass below (the bindings stay).
+    g.grid.starts().bind(8);
+    g.neighbourCounts.bind(12);
+    g.neighbourList.bind(13);
+    ComputeProgram& neighbours = g.neighbours;
+    neighbours.use();
+    setCommonUniforms(neighbours);
+    const double searchRadius = params_.neighbourRadius();
+    neighbours.set("searchRadius2", float(searchRadius * searchRadius));
+    g.p.bind(0);
+    g.status.bind(10);
+    neighbours.dispatch(n, kPairLocal);
+    storageBarrier();
+    ++g.dispatches;
+
     // Lines 8–19: K Jacobi iterations of λ and Δx.
     const auto iterations = static_cast<std::size_t>(params_.iterations);
     g.errorGroups = groupsFor(n, kPairLocal);
     g.errorSums.reserve(std::max<std::size_t>(1, iterations * g.errorGroups) * 8);
-    g.grid.starts().bind(8);
     for (std::size_t k = 0; k < iterations; ++k) {
         g.lambda.use();
         setCommonUniforms(g.lambda);
@@ -269,8 +296,17 @@ void FluidModelGL::afterStep() {
 }
 
 void FluidModelGL::checkGpuHealth() {
+    FluidGpu& g = *gpu_;
     std::uint32_t status[4];
-    gpu_->status.download(status, sizeof status);
+    g.status.download(status, sizeof status);
+    if (status[1] > g.neighbourCapacity && g.neighbourCapacity < kLargestNeighbourCapacity) {
+        // Some particles had more neighbours than the list holds (they walked their cells): lengthen it.
+        const unsigned wanted = (status[1] + status[1] / 4 + 7) / 8 * 8;
+        g.neighbourCapacity = std::min(kLargestNeighbourCapacity, wanted);
+        g.neighbourList.reserve(std::size_t(g.neighbourCapacity) * g.count * 4);
+        const std::uint32_t cleared = 0;
+        g.status.upload(&cleared, sizeof cleared, sizeof(std::uint32_t));
+    }
     if (status[0] == 0) return;
     pullState();
     std::ostringstream hint;

@@ -1,7 +1,7 @@
 // The fluid on the GPU: the CPU model's parameters, presets, tools and observables, with Algorithm 1's
-// passes (predict + counting sort, λ, Δx, velocities, vorticity, XSPH) as OpenGL 4.3 compute shaders in
-// float32, in gather form over the cell-ordered particles. The CPU state is brought up to date only
-// when something reads it.
+// passes (predict + counting sort, the neighbour search, λ, Δx, velocities, vorticity, XSPH) as OpenGL 4.3
+// compute shaders in float32, in gather form over the cell-ordered particles. The CPU state is brought up to
+// date only when something reads it.
 #pragma once
 
 #include "GlContext.h"
@@ -25,6 +25,8 @@ public:
     void finishPendingWork() const override; // glFinish in the model's context
     SceneView sceneViewSharingGpu() const override;
     int dispatchesLastStep() const;
+    // Neighbours each particle's list holds now: it grows at a health check after particles had more.
+    unsigned neighbourListLength() const;
 
 private:
     void advance(double h) override;

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 using namespace pl;
 using namespace pl::gl;
@@ -26,6 +27,22 @@ std::vector<std::pair<double, double>> sortedPositions(const FluidState& s) {
     return p;
 }
 
+// The largest distance from a particle of one state to the nearest particle of the other, both ways: the
+// GPU reorders particles, and where they do not sit on a lattice this pairs them up without an order.
+double farthestFromTheOther(const FluidState& a, const FluidState& b) {
+    auto oneWay = [](const FluidState& from, const FluidState& to) {
+        double worst = 0;
+        for (std::size_t i = 0; i < from.size(); ++i) {
+            double nearest = std::numeric_limits<double>::infinity();
+            for (std::size_t j = 0; j < to.size(); ++j)
+                nearest = std::min(nearest, std::hypot(from.x[i] - to.x[j], from.y[i] - to.y[j]));
+            worst = std::max(worst, nearest);
+        }
+        return worst;
+    };
+    return std::max(oneWay(a, b), oneWay(b, a));
+}
+
 } // namespace
 
 class TestGlFluid : public QObject {
@@ -41,11 +58,12 @@ private slots:
         }
     }
 
-    // One step from the dam-break block. Inside the block the GPU lands within float rounding of the CPU
-    // (median 6e-7); the block's corners move by up to ~0.18 in this first, violent step (ε = 1), and
-    // five Jacobi iterations amplify float rounding there to ~0.7 % of that move (measured): the bound is
-    // twice that. The block sits on a lattice, so
-    // ordering positions by a fine grid pairs particles up again.
+    // One step from the dam-break block. The GPU lands within float rounding of the CPU everywhere (median
+    // 4e-7, worst 8e-6 with the block's corners moving by up to ~0.18 in this first, violent step, ε = 1):
+    // both find the neighbours within 1.05 h of the predictions once and keep them through the iterations.
+    // (When every GPU pass searched the cells around the current positions instead, the corners came out
+    // up to 1.3e-3 apart.) The block sits on a lattice, so ordering positions by a fine grid pairs
+    // particles up again.
     void oneStepMatchesCpu() {
         const Preset preset = loadPreset("fluid-dam-break");
         FluidModel cpu;
@@ -68,7 +86,7 @@ private slots:
         const double median = differences[differences.size() / 2], worst = differences.back();
         qInfo("|Δx| after one step: median %.3g, worst %.3g; largest move %.3g", median, worst, largestMove);
         QVERIFY(median < 1e-5);
-        QVERIFY(worst < 0.015 * largestMove);
+        QVERIFY(worst < 1e-4);
     }
 
     // Many steps: the free-surface flow is chaotic in detail, its measures are not.
@@ -86,6 +104,45 @@ private slots:
         QVERIFY(std::abs(og.frontZ - oc.frontZ) < 0.05 * oc.frontZ);
         QVERIFY(std::abs(og.densityErrorMean - oc.densityErrorMean) < 0.3 * oc.densityErrorMean + 1e-3);
         QVERIFY(!gpu.failure());
+    }
+
+    // A fluid packed so tightly that each particle has ~38 neighbours within the search radius, more
+    // than the first list holds: those particles walk their cells, and after a health check (every 64
+    // steps) the list has grown to hold them. From one saved state, a model with the grown list and a
+    // fresh one walking cells take the same step as the CPU: the walk and the list give the same pairs.
+    void aCrowdedFluidWalksItsCellsUntilItsListGrows() {
+        Preset preset = loadPreset("fluid-dam-break");
+        preset.params["spawn_spacing"] = 0.3;
+        preset.params["fill_x1"] = 6.0;
+        preset.params["fill_y1"] = 8.0;
+        FluidModelGL grown(context_);
+        grown.reset(preset);
+        const unsigned first = grown.neighbourListLength();
+        for (int s = 0; s < 64; ++s) grown.step();
+        QVERIFY(!grown.failure());
+        QVERIFY2(grown.neighbourListLength() > first, "the list grows after particles overflowed it");
+        const StateRecord saved = grown.saveState();
+        FluidModelGL walking(context_);
+        walking.reset(preset);
+        walking.restoreState(saved);
+        QCOMPARE(walking.neighbourListLength(), first);
+        FluidModel cpu;
+        cpu.reset(preset);
+        cpu.restoreState(saved);
+        const FluidState before = cpu.state();
+        grown.step(), walking.step(), cpu.step();
+        double largestMove = 0;
+        for (std::size_t i = 0; i < before.size(); ++i)
+            largestMove = std::max(
+                largestMove, std::hypot(cpu.state().x[i] - before.x[i], cpu.state().y[i] - before.y[i]));
+        const double listed = farthestFromTheOther(cpu.state(), grown.state()),
+                     walked = farthestFromTheOther(cpu.state(), walking.state());
+        qInfo("list %u → %u; the farthest particle from the CPU's: list %.3g, cells %.3g; largest move %.3g",
+              first, grown.neighbourListLength(), listed, walked, largestMove);
+        // The saved state is 64 chaotic steps in: float rounding that those steps left differs from run to
+        // run (the sort's atomics order each cell), and one step amplifies it as in oneStepMatchesCpu.
+        QVERIFY(listed < 0.015 * largestMove);
+        QVERIFY(walked < 0.015 * largestMove);
     }
 
     // The λ pass's group reductions give the same per-iteration profile as the CPU's serial sums.

@@ -14,6 +14,7 @@ layout(std430, binding = 1) readonly buffer Lambda { float lambda[]; };
 layout(std430, binding = 2) writeonly buffer Corrected { vec2 corrected[]; };
 
 uniform uint count;
+#include "fluid/fluid_neighbour_walk.glsl"
 uniform float inverseRest;
 
 void main() {
@@ -21,16 +22,14 @@ void main() {
     if (i >= count) return;
     const vec2 pi = p[i];
     const float li = lambda[i];
-    const ivec2 c = cellCoord(pi);
+    const NeighbourWalk walk = neighbourWalk(i, pi);
     vec2 delta = vec2(0.0);
-    for (int dy = -cellReach; dy <= cellReach; ++dy) {
-        const uvec2 range = cellRowRange(c, dy);
-        for (uint j = range.x; j < range.y; ++j) {
-            const vec2 d = pi - p[j];
-            const float r2 = dot(d, d);
-            if (r2 >= kernelH2 || j == i) continue;
-            delta += (li + lambda[j] + artificialPressure(w(r2))) * gradFactor(r2) * d;
-        }
+    for (uint k = 0u; k < walk.length; ++k) {
+        const uint j = neighbourAt(walk, i, k);
+        const vec2 d = pi - p[j];
+        const float r2 = dot(d, d);
+        if (r2 >= kernelH2 || j == i) continue;
+        delta += (li + lambda[j] + artificialPressure(w(r2))) * gradFactor(r2) * d;
     }
     vec2 next = pi + delta * inverseRest;
     confine(i, next);

@@ -13,6 +13,7 @@ layout(std430, binding = 1) writeonly buffer Lambda { float lambda[]; };
 layout(std430, binding = 2) writeonly buffer ErrorSums { vec2 errorSums[]; }; // (sum, max) per group
 
 uniform uint count;
+#include "fluid/fluid_neighbour_walk.glsl"
 uniform float inverseRest, epsilon;
 uniform uint errorOffset; // this iteration's first group slot
 
@@ -23,20 +24,18 @@ void main() {
     float compression = 0.0;
     if (i < count) {
         const vec2 pi = p[i];
-        const ivec2 c = cellCoord(pi);
+        const NeighbourWalk walk = neighbourWalk(i, pi);
         float rho = selfWeight, sumSquares = 0.0;
         vec2 g = vec2(0.0);
-        for (int dy = -cellReach; dy <= cellReach; ++dy) {
-            const uvec2 range = cellRowRange(c, dy);
-            for (uint j = range.x; j < range.y; ++j) {
-                const vec2 d = pi - p[j];
-                const float r2 = dot(d, d);
-                if (r2 >= kernelH2 || j == i) continue;
-                const float f = gradFactor(r2);
-                rho += w(r2);
-                g += f * d;
-                sumSquares += f * f * r2;
-            }
+        for (uint k = 0u; k < walk.length; ++k) {
+            const uint j = neighbourAt(walk, i, k);
+            const vec2 d = pi - p[j];
+            const float r2 = dot(d, d);
+            if (r2 >= kernelH2 || j == i) continue;
+            const float f = gradFactor(r2);
+            rho += w(r2);
+            g += f * d;
+            sumSquares += f * f * r2;
         }
         const float constraint = rho * inverseRest - 1.0;
         lambda[i] = -constraint / ((dot(g, g) + sumSquares) * inverseRest * inverseRest + epsilon);

@@ -13,6 +13,7 @@ layout(std430, binding = 2) buffer Omega { float omega[]; };
 layout(std430, binding = 3) writeonly buffer VelOut { vec2 vOut[]; };
 
 uniform uint count;
+#include "fluid/fluid_neighbour_walk.glsl"
 uniform int pass_;
 uniform float strength, inverseRest; // ε_vort · Δt; 1/ρ₀
 
@@ -20,33 +21,29 @@ void main() {
     const uint i = itemIndex();
     if (i >= count) return;
     const vec2 pi = p[i];
-    const ivec2 c = cellCoord(pi);
+    const NeighbourWalk walk = neighbourWalk(i, pi);
     if (pass_ == 0) {
         float wi = 0.0;
-        for (int dy = -cellReach; dy <= cellReach; ++dy) {
-            const uvec2 range = cellRowRange(c, dy);
-            for (uint j = range.x; j < range.y; ++j) {
-                const vec2 d = pi - p[j];
-                const float r2 = dot(d, d);
-                if (r2 >= kernelH2 || j == i) continue;
-                const float f = gradFactor(r2);
-                const vec2 u = vIn[j] - vIn[i];
-                wi -= u.x * (f * d.y) - u.y * (f * d.x);
-            }
+        for (uint k = 0u; k < walk.length; ++k) {
+            const uint j = neighbourAt(walk, i, k);
+            const vec2 d = pi - p[j];
+            const float r2 = dot(d, d);
+            if (r2 >= kernelH2 || j == i) continue;
+            const float f = gradFactor(r2);
+            const vec2 u = vIn[j] - vIn[i];
+            wi -= u.x * (f * d.y) - u.y * (f * d.x);
         }
         omega[i] = wi;
         return;
     }
     vec2 eta = vec2(0.0);
     const float oi = abs(omega[i]);
-    for (int dy = -cellReach; dy <= cellReach; ++dy) {
-        const uvec2 range = cellRowRange(c, dy);
-        for (uint j = range.x; j < range.y; ++j) {
-            const vec2 d = pi - p[j];
-            const float r2 = dot(d, d);
-            if (r2 >= kernelH2 || j == i) continue;
-            eta += gradFactor(r2) * (abs(omega[j]) - oi) * d;
-        }
+    for (uint k = 0u; k < walk.length; ++k) {
+        const uint j = neighbourAt(walk, i, k);
+        const vec2 d = pi - p[j];
+        const float r2 = dot(d, d);
+        if (r2 >= kernelH2 || j == i) continue;
+        eta += gradFactor(r2) * (abs(omega[j]) - oi) * d;
     }
     eta *= inverseRest;
     const float len = length(eta);

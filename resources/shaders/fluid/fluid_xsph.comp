@@ -11,6 +11,7 @@ layout(std430, binding = 1) readonly buffer VelIn { vec2 vIn[]; };
 layout(std430, binding = 3) writeonly buffer VelOut { vec2 vOut[]; };
 
 uniform uint count;
+#include "fluid/fluid_neighbour_walk.glsl"
 uniform float viscosity;
 
 void main() {
@@ -18,16 +19,14 @@ void main() {
     if (i >= count) return;
     const vec2 pi = p[i];
     const vec2 vi = vIn[i];
-    const ivec2 c = cellCoord(pi);
+    const NeighbourWalk walk = neighbourWalk(i, pi);
     vec2 sum = vec2(0.0);
-    for (int dy = -cellReach; dy <= cellReach; ++dy) {
-        const uvec2 range = cellRowRange(c, dy);
-        for (uint j = range.x; j < range.y; ++j) {
-            const vec2 d = pi - p[j];
-            const float r2 = dot(d, d);
-            if (r2 >= kernelH2 || j == i) continue;
-            sum += (vIn[j] - vi) * w(r2);
-        }
+    for (uint k = 0u; k < walk.length; ++k) {
+        const uint j = neighbourAt(walk, i, k);
+        const vec2 d = pi - p[j];
+        const float r2 = dot(d, d);
+        if (r2 >= kernelH2 || j == i) continue;
+        sum += (vIn[j] - vi) * w(r2);
     }
     vOut[i] = vi + viscosity * sum;
 }
