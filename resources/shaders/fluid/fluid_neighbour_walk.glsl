@@ -21,14 +21,13 @@ NeighbourWalk neighbourWalk(uint i, vec2 pi) {
     NeighbourWalk walk;
     walk.length = neighbourCount[i];
     walk.listed = walk.length <= neighbourCapacity;
+    if (walk.listed) return walk; // rows unused
     const ivec2 c = cellCoord(pi);
+    walk.length = 0u;
     for (int r = 0; r < kMaxCellRows; ++r) {
-        const uvec2 range = walk.listed || r > 2 * cellReach ? uvec2(0u) : cellRowRange(c, r - cellReach);
+        const uvec2 range = r <= 2 * cellReach ? cellRowRange(c, r - cellReach) : uvec2(0u);
         walk.rows[r] = uvec2(range.x, range.y - range.x);
-    }
-    if (!walk.listed) {
-        walk.length = 0u;
-        for (int r = 0; r < kMaxCellRows; ++r) walk.length += walk.rows[r].y;
+        walk.length += walk.rows[r].y;
     }
     return walk;
 }
