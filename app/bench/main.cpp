@@ -132,11 +132,6 @@ int main(int argc, char** argv) {
            "Invocations per disk in the gas's force pass, each timed: 0 (automatic) or a power of two "
            "up to 32")
         ->check(CLI::IsMember({0u, 1u, 2u, 4u, 8u, 16u, 32u}));
-    std::vector<std::string> forceTiles{"auto"};
-    app.add_option("--force-tiles", forceTiles,
-                   "Whether the gas's force pass reads each work group's candidates from shared memory, "
-                   "each timed: auto (on a GPU, off on a software rasteriser), on, off, e.g. on off")
-        ->check(CLI::IsMember({"auto", "on", "off"}));
     bool glDebug = false, profileEach = false;
     app.add_flag("--profile-each", profileEach,
                  "After timing each GPU gas point, profile its passes on the same model (timestamps)");
@@ -221,13 +216,8 @@ int main(int argc, char** argv) {
         for (const auto& [pass, ns] : model.profile())
             emit({{"scene", "gas"},
                   {"particles", n},
-                  {"force_tiles", model.forceTiles()},
                   {"pass", pass},
                   {"us_per_step", ns / kProfiledSteps / 1e3}});
-        emit({{"scene", "gas"},
-              {"particles", n},
-              {"force_tiles", model.forceTiles()},
-              {"force_groups_tiled", model.forceTileShare()}});
         model.setProfiling(false);
     };
     auto selected = [&](const std::string& scene) {
@@ -243,34 +233,31 @@ int main(int argc, char** argv) {
             for (const std::string backend : {"gl", "cpu"}) {
                 if (backend == "cpu" && n > cpuMax) continue;
                 const bool gpuGas = backend == "gl" && scene == "gas";
-                for (unsigned lanes : gpuGas ? forceLanes : std::vector<unsigned>{0})
-                    for (const std::string& tiles : gpuGas ? forceTiles : std::vector<std::string>{"auto"}) {
-                        auto choice =
-                            pl::gl::createModel(scene, pl::gl::backendFromName(backend), &preset, context);
-                        if (!choice.message.empty()) std::cerr << choice.message << '\n';
-                        auto* gas = dynamic_cast<pl::gl::GasModelGL*>(choice.model.get());
-                        if (gas) gas->setForceLanesPerDisk(lanes);
-                        if (gas && tiles != "auto") gas->setForceTiles(tiles == "on");
-                        const auto p = pl::gl::timeModel(*choice.model, scene, backend, settings);
-                        const bool gpu = backend == "gl";
-                        emit({{"scene", scene},
-                              {"force_lanes_per_disk", gas ? gas->forceLanesPerDisk() : 0u},
-                              {"force_tiles", gas ? gas->forceTiles() : false},
-                              {"backend", backend},
-                              {"particles", p.particles},
-                              {"particle_steps_per_s", p.particleStepsPerSecond},
-                              {"us_per_step", p.microsecondsPerStep},
-                              {"dispatches_per_step", p.dispatchesPerStep},
-                              {"issue_us_per_step", p.issueMicrosecondsPerStep},
-                              {"repeat_us_per_step", p.repeatMicrosecondsPerStep},
-                              {"settle_s", p.settleSeconds},
-                              {"model_bytes_per_particle_step", gpu ? bytes : 0.0},
-                              {"achieved_bandwidth_fraction",
-                               gpu ? p.particleStepsPerSecond * bytes / copy : 0.0},
-                              {"goal_particle_steps_per_s", goal}});
-                        points.push_back(p);
-                        if (gas && profileEach) profilePasses(*gas, n);
-                    }
+                for (unsigned lanes : gpuGas ? forceLanes : std::vector<unsigned>{0}) {
+                    auto choice =
+                        pl::gl::createModel(scene, pl::gl::backendFromName(backend), &preset, context);
+                    if (!choice.message.empty()) std::cerr << choice.message << '\n';
+                    auto* gas = dynamic_cast<pl::gl::GasModelGL*>(choice.model.get());
+                    if (gas) gas->setForceLanesPerDisk(lanes);
+                    const auto p = pl::gl::timeModel(*choice.model, scene, backend, settings);
+                    const bool gpu = backend == "gl";
+                    emit(
+                        {{"scene", scene},
+                         {"force_lanes_per_disk", gas ? gas->forceLanesPerDisk() : 0u},
+                         {"backend", backend},
+                         {"particles", p.particles},
+                         {"particle_steps_per_s", p.particleStepsPerSecond},
+                         {"us_per_step", p.microsecondsPerStep},
+                         {"dispatches_per_step", p.dispatchesPerStep},
+                         {"issue_us_per_step", p.issueMicrosecondsPerStep},
+                         {"repeat_us_per_step", p.repeatMicrosecondsPerStep},
+                         {"settle_s", p.settleSeconds},
+                         {"model_bytes_per_particle_step", gpu ? bytes : 0.0},
+                         {"achieved_bandwidth_fraction", gpu ? p.particleStepsPerSecond * bytes / copy : 0.0},
+                         {"goal_particle_steps_per_s", goal}});
+                    points.push_back(p);
+                    if (gas && profileEach) profilePasses(*gas, n);
+                }
             }
         }
     };

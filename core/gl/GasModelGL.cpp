@@ -44,8 +44,6 @@ struct GasGpu {
     std::size_t count = 0;
     int dispatches = 0;
     bool profiling = false;
-    std::uint32_t tiledGroupsBefore = 0;                   // status[2] when profiling began
-    std::uint64_t forceGroups = 0;                         // force-pass work groups issued since
     std::vector<std::pair<std::string, GLuint>> marks;     // this step's timestamps
     std::vector<std::pair<std::string, double>> passTimes; // accumulated per pass [ns]
 
@@ -112,17 +110,6 @@ int GasModelGL::dispatchesLastStep() const {
 void GasModelGL::setProfiling(bool on) {
     gpu_->profiling = on;
     gpu_->passTimes.clear();
-    std::uint32_t status[4];
-    gpu_->status.download(status, sizeof status);
-    gpu_->tiledGroupsBefore = status[2];
-    gpu_->forceGroups = 0;
-}
-
-double GasModelGL::forceTileShare() const {
-    if (gpu_->forceGroups == 0) return 0.0;
-    std::uint32_t status[4];
-    gpu_->status.download(status, sizeof status);
-    return double(status[2] - gpu_->tiledGroupsBefore) / double(gpu_->forceGroups);
 }
 
 std::vector<std::pair<std::string, double>> GasModelGL::profile() const {
@@ -302,10 +289,6 @@ unsigned GasModelGL::forceLanesPerDisk() const {
     return lanes;
 }
 
-bool GasModelGL::forceTiles() const {
-    return forceTiles_.value_or(!contextInfo().software);
-}
-
 void GasModelGL::forces(bool countContacts, double kick, bool energies) {
     GasGpu& g = *gpu_;
     ComputeProgram& p = g.forces;
@@ -321,9 +304,6 @@ void GasModelGL::forces(bool countContacts, double kick, bool energies) {
     p.set("countContacts", countContacts ? 1 : 0);
     p.set("energies", energies ? 1 : 0);
     p.set("backtrackH", float(signedStep()));
-    p.set("useTiles", forceTiles() ? 1 : 0);
-    p.set("countTiles", g.profiling ? 1 : 0);
-    if (g.profiling) g.forceGroups += groupsFor(g.count * lanes, kForceLocal);
     g.grid.setUniforms(p);
     g.bindState();
     g.grid.starts().bind(8);

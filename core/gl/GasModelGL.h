@@ -8,7 +8,6 @@
 #include "gas/GasModel.h"
 
 #include <memory>
-#include <optional>
 
 namespace pl::gl {
 
@@ -44,15 +43,6 @@ public:
     // the CPU's few cores. Throws std::invalid_argument for other counts. For the benchmark and the tests.
     void setForceLanesPerDisk(unsigned lanes);
     unsigned forceLanesPerDisk() const; // what the next force pass uses
-    // Whether the force pass copies each work group's candidates into shared memory first
-    // (gas_forces.comp: the same forces, bit for bit). By default on a GPU and off on a software
-    // rasteriser, where shared memory is the same cache and the group's barriers cost more than the
-    // reads they save. For the benchmark and the tests.
-    void setForceTiles(bool on) { forceTiles_ = on; }
-    bool forceTiles() const;
-    // The share of the force pass's work groups that read from tiles, over the force passes since
-    // profiling was switched on (counted only while profiling).
-    double forceTileShare() const;
 
 private:
     void advance(double h) override;
@@ -66,8 +56,7 @@ private:
     void checkGpuHealth();
 
     std::unique_ptr<GasGpu> gpu_;
-    unsigned forceLanes_ = 0;        // 0: automatic
-    std::optional<bool> forceTiles_; // empty: automatic
+    unsigned forceLanes_ = 0; // 0: automatic
 };
 
 } // namespace pl::gl

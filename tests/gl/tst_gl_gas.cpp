@@ -239,55 +239,6 @@ private slots:
         QCOMPARE(hg[0].name, hc[0].name);
     }
 
-    void forcesFromTilesAreTheSameBits_data() {
-        QTest::addColumn<double>("disks");
-        QTest::addColumn<unsigned>("forceLanes");
-        QTest::newRow("1600 disks, 1 invocation each") << 1600.0 << 1u;
-        QTest::newRow("1600 disks, 8 invocations each") << 1600.0 << 8u;
-        QTest::newRow("9000 disks, 3-dispatch sort") << 9000.0 << 1u;
-    }
-
-    // gas_forces.comp reads a work group's candidates from shared memory: the same candidates in the same
-    // order as the global reads, so the forces must be the same bits, and the tiles must have been used.
-    // The one-group sort is deterministic, so whole trajectories compare; the three-dispatch sort orders
-    // a cell's disks by atomics, so there the two force passes compare on one sorted state (the energies
-    // and virial recomputed by observe(), summed in a fixed order).
-    void forcesFromTilesAreTheSameBits() {
-        QFETCH(double, disks);
-        QFETCH(unsigned, forceLanes);
-        const Preset preset = denseGas("velocity-verlet", disks);
-        GasModelGL tiled(context_), global(context_);
-        for (GasModelGL* m : {&tiled, &global}) {
-            m->reset(preset);
-            m->setForceLanesPerDisk(forceLanes);
-            m->setProfiling(true);
-        }
-        tiled.setForceTiles(true); // off by default on a software rasteriser
-        global.setForceTiles(false);
-        for (int s = 0; s < 20; ++s) tiled.step(), global.step();
-        qInfo("work groups tiled: %.3f (global reads: %.3f)", tiled.forceTileShare(),
-              global.forceTileShare());
-        QVERIFY(tiled.forceTileShare() > 0.99); // ~400 candidates a group, the tile holds 512
-        QCOMPARE(global.forceTileShare(), 0.0);
-        const bool sortedInOneGroup = tiled.dispatchesLastStep() == 2; // drift + sort, forces
-
-        const GasObservables fromTiles = tiled.observe();
-        tiled.setForceTiles(false);
-        const GasObservables fromGlobal = tiled.observe();
-        QVERIFY(fromTiles.potential > 0);                     // disks overlap: the pairs were found
-        QVERIFY(fromTiles.potential == fromGlobal.potential); // exactly: QCOMPARE would allow 1e-12
-        QVERIFY(fromTiles.pressureVirial == fromGlobal.pressureVirial);
-        if (sortedInOneGroup) {
-            const GasState& a = tiled.state();
-            const GasState& b = global.state();
-            QCOMPARE(a.id, b.id);
-            QCOMPARE(a.x, b.x);
-            QCOMPARE(a.vy, b.vy);
-            QCOMPARE(a.ax, b.ax);
-            QCOMPARE(a.ay, b.ay);
-        }
-    }
-
     void forceLanesAreChosenOrRefused() {
         GasModelGL gpu(context_);
         gpu.reset(denseGas("velocity-verlet"));
@@ -297,7 +248,6 @@ private slots:
         QVERIFY_THROWS_EXCEPTION(std::invalid_argument, gpu.setForceLanesPerDisk(3));
         QVERIFY_THROWS_EXCEPTION(std::invalid_argument, gpu.setForceLanesPerDisk(64));
         QCOMPARE(gpu.forceLanesPerDisk(), 4u); // a refused count changes nothing
-        QCOMPARE(gpu.forceTiles(), !context_->info().software);
     }
 
     void blowUpIsCaughtOnTheGpu() {
