@@ -66,6 +66,13 @@ public:
     virtual StateRecord saveState() const = 0;
     virtual void restoreState(const StateRecord& state) = 0;
 
+    // A step that a stop request may abandon half way (common/StopRequest.h): keepStepStart() before it
+    // says whether the model keeps, as the step goes, what the step changes; undoStep() after an
+    // abandoned one then puts the step's start back, touching only what the step reached. A model that
+    // says false (the default) is kept whole by saveState() and put back by restoreState().
+    virtual bool keepStepStart() { return false; }
+    virtual void undoStep() {}
+
     // Advances by one step of timeDirection() × dt. Does nothing once failure() is set.
     virtual void step() = 0;
     virtual std::int64_t stepCount() const = 0;

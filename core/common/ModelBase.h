@@ -72,6 +72,7 @@ public:
             throw PresetError("params." + e.key(), e.what());
         }
         checkObstacles(next, preset.obstacles);
+        refuseBeforeBuilding(next, preset.seed);
         Params previous = params_;
         const std::uint64_t previousSeed = seed_;
         std::vector<Obstacle> previousObstacles = obstacles_;
@@ -140,6 +141,9 @@ protected:
     virtual void paramsChanged(const Params& /*before*/) {}
     // A preset's obstacles against its parameters; throw PresetError naming the entry.
     virtual void checkObstacles(const Params& /*next*/, const std::vector<Obstacle>& /*obstacles*/) const {}
+    // A preset's refusals that its parameters and seed decide, before reset() builds the state (a state
+    // of 1e7 particles takes seconds and gigabytes to build); throw PresetError naming the entry.
+    virtual void refuseBeforeBuilding(const Params& /*next*/, std::uint64_t /*seed*/) const {}
     // After a preset's reset: throw PresetError where the built state makes the preset unusable.
     virtual void checkBuiltState() const {}
     // A backend that keeps the state elsewhere (the GPU) brings the CPU state up to date here before the

@@ -64,13 +64,18 @@ bool InterruptibleStepper::step() {
         lastSeconds_ = secondsSince(start);
         return true;
     }
-    // The copy costs one pass over the state, small beside a step of kKeepAfterSeconds or more.
-    const StateRecord kept = model_.saveState();
+    // A model that keeps its own step start copies what the step changes as it goes and undoes only
+    // that; otherwise the whole state is copied, one pass over it, and put back through restoreState().
+    const bool keepsItself = model_.keepStepStart();
+    const StateRecord kept = keepsItself ? StateRecord{} : model_.saveState();
     try {
         AllowAbandoning allow;
         model_.step();
     } catch (const StepAbandoned&) {
-        model_.restoreState(kept);
+        if (keepsItself)
+            model_.undoStep();
+        else
+            model_.restoreState(kept);
         ++abandoned_;
         return false;
     }

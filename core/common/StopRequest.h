@@ -27,10 +27,11 @@ struct StepAbandoned : std::exception {
 };
 
 // Steps a model so that a stop request ends even a long step within a second. Before a step that may
-// take long (the previous one, or the set-up, took at least kKeepAfterSeconds) it keeps the model's
-// state in memory and allows the step to be abandoned; a request half way then puts the kept state
-// back, so the run ends at the last whole step exactly as if the request had come between steps. Short
-// steps keep nothing (no copy, no cost) and always finish: they end within kKeepAfterSeconds.
+// take long (the previous one, or the set-up, took at least kKeepAfterSeconds) it has the step's start
+// kept (Model::keepStepStart(): by the model, as the step goes, or else a copy of the whole state) and
+// allows the step to be abandoned; a request half way then puts the start back, so the run ends at the
+// last whole step exactly as if the request had come between steps. Short steps keep nothing (no copy,
+// no cost) and always finish: they end within kKeepAfterSeconds.
 class InterruptibleStepper {
 public:
     static constexpr double kKeepAfterSeconds = 0.1;

@@ -44,6 +44,42 @@ void DsmcModel::buildInitialState() {
     }
 }
 
+dsmc::Velocity DsmcModel::drawnVelocity(const DsmcParams& p, std::uint64_t seed, long long k,
+                                        std::uint32_t stream) {
+    const double sigma = std::sqrt(kBoltzmann * p.temperature / p.mass());
+    const auto id = static_cast<std::uint32_t>(k);
+    const auto [gx, gy] = gaussianPair(randomWords(seed, RngPurpose::InitialVelocity, id, 2 * stream));
+    const auto [gz, unused] =
+        gaussianPair(randomWords(seed, RngPurpose::InitialVelocity, id, 2 * stream + 1));
+    (void)unused;
+    return {sigma * gx, sigma * gy, p.planar() ? 0.0 : sigma * gz};
+}
+
+dsmc::Velocity DsmcModel::drawnBkwVelocity(const DsmcParams& p, std::uint64_t seed, long long k) {
+    const double scale = std::sqrt(0.6 * kBoltzmann * p.temperature / p.mass());
+    const auto id = static_cast<std::uint32_t>(k);
+    const auto [g1, g2] = gaussianPair(randomWords(seed, RngPurpose::InitialVelocity, id, 2 * kBkwStream));
+    const auto [g3, g4] =
+        gaussianPair(randomWords(seed, RngPurpose::InitialVelocity, id, 2 * kBkwStream + 1));
+    const auto [g5, unused] =
+        gaussianPair(randomWords(seed, RngPurpose::InitialVelocity, id, 2 * kBkwStream + 7));
+    (void)unused;
+    const double speed = scale * std::sqrt(g1 * g1 + g2 * g2 + g3 * g3 + g4 * g4 + g5 * g5);
+    const auto [u1, u2] = uniformPair(randomWords(seed, RngPurpose::InitialVelocity, id, 2 * kBkwStream + 9));
+    const double cosTheta = 2.0 * u1 - 1.0, sinTheta = std::sqrt(std::max(0.0, 1.0 - cosTheta * cosTheta));
+    const double phi = 2.0 * std::numbers::pi * u2;
+    return {speed * sinTheta * std::cos(phi), speed * sinTheta * std::sin(phi), speed * cosTheta};
+}
+
+dsmc::Velocity DsmcModel::drawnInitialVelocity(const DsmcParams& p, std::uint64_t seed, long long i) {
+    if (p.initial == DsmcInitialState::Bkw) return drawnBkwVelocity(p, seed, i);
+    if (p.initial == DsmcInitialState::Maxwellian) return drawnVelocity(p, seed, i, kBeamOneStream);
+    dsmc::Velocity v = i < p.countA ? drawnVelocity(p, seed, i, kBeamOneStream)
+                                    : drawnVelocity(p, seed, i - p.countA, kBeamTwoStream);
+    v.x += i < p.countA ? p.driftA : p.driftB;
+    return v;
+}
+
 void DsmcModel::addPopulation(long long count, double drift, std::uint8_t origin, std::uint32_t stream) {
     if (count <= 0) return;
     // Gaussian thermal velocities, then moment matching: each population's sample mean is removed and its
@@ -53,14 +89,7 @@ void DsmcModel::addPopulation(long long count, double drift, std::uint8_t origin
     // temperature; we sample the Maxwellian it intends.)
     const std::size_t first = state_.size();
     const double sigma = std::sqrt(kBoltzmann * params_.temperature / params_.mass());
-    for (long long k = 0; k < count; ++k) {
-        const auto id = static_cast<std::uint32_t>(k);
-        const auto [gx, gy] = gaussianPair(randomWords(seed_, RngPurpose::InitialVelocity, id, 2 * stream));
-        const auto [gz, unused] =
-            gaussianPair(randomWords(seed_, RngPurpose::InitialVelocity, id, 2 * stream + 1));
-        (void)unused;
-        state_.append({sigma * gx, sigma * gy, params_.planar() ? 0.0 : sigma * gz}, origin);
-    }
+    for (long long k = 0; k < count; ++k) state_.append(drawnVelocity(params_, seed_, k, stream), origin);
     const double sum2 = removeMean(state_, first);
     const auto components = static_cast<double>(params_.velocityComponents);
     const double scale = count > 1 && sum2 > 0
@@ -76,26 +105,8 @@ void DsmcModel::addPopulation(long long count, double drift, std::uint8_t origin
 void DsmcModel::addBkwPopulation(long long count) {
     // BKW at K₀ = 0.6 (docs/dsmc.md#bkw-solution): speed = χ₅ variate × √(0.6 kT/m), direction uniform on the
     // sphere. Only the mean is removed; the moments are normalised by the sampled ⟨c²⟩, which DSMC conserves.
-    const double scale = std::sqrt(0.6 * kBoltzmann * params_.temperature / params_.mass());
     const std::size_t first = state_.size();
-    for (long long k = 0; k < count; ++k) {
-        const auto id = static_cast<std::uint32_t>(k);
-        const auto [g1, g2] =
-            gaussianPair(randomWords(seed_, RngPurpose::InitialVelocity, id, 2 * kBkwStream));
-        const auto [g3, g4] =
-            gaussianPair(randomWords(seed_, RngPurpose::InitialVelocity, id, 2 * kBkwStream + 1));
-        const auto [g5, unused] =
-            gaussianPair(randomWords(seed_, RngPurpose::InitialVelocity, id, 2 * kBkwStream + 7));
-        (void)unused;
-        const double speed = scale * std::sqrt(g1 * g1 + g2 * g2 + g3 * g3 + g4 * g4 + g5 * g5);
-        const auto [u1, u2] =
-            uniformPair(randomWords(seed_, RngPurpose::InitialVelocity, id, 2 * kBkwStream + 9));
-        const double cosTheta = 2.0 * u1 - 1.0,
-                     sinTheta = std::sqrt(std::max(0.0, 1.0 - cosTheta * cosTheta));
-        const double phi = 2.0 * std::numbers::pi * u2;
-        state_.append({speed * sinTheta * std::cos(phi), speed * sinTheta * std::sin(phi), speed * cosTheta},
-                      0);
-    }
+    for (long long k = 0; k < count; ++k) state_.append(drawnBkwVelocity(params_, seed_, k), 0);
     removeMean(state_, first);
 }
 

@@ -61,9 +61,17 @@ private:
     void refuseParams(const DsmcParams& next) const override;
     void paramsChanged(const DsmcParams& before) override;
     void checkObstacles(const DsmcParams& next, const std::vector<Obstacle>& obstacles) const override;
+    void refuseBeforeBuilding(const DsmcParams& next, std::uint64_t seed) const override;
     void checkBuiltState() const override;
 
     void buildInitialState();
+    // The velocity particle k of a population (stream) or of the BKW gas draws before its moments are
+    // matched (DsmcInitialState.cpp), and that of particle i of the whole initial state: what
+    // refuseBeforeBuilding() predicts (σ c_r)_max from without building the state.
+    static dsmc::Velocity drawnVelocity(const DsmcParams& p, std::uint64_t seed, long long k,
+                                        std::uint32_t stream);
+    static dsmc::Velocity drawnBkwVelocity(const DsmcParams& p, std::uint64_t seed, long long k);
+    static dsmc::Velocity drawnInitialVelocity(const DsmcParams& p, std::uint64_t seed, long long i);
     void addPopulation(long long count, double drift, std::uint8_t origin, std::uint32_t stream);
     void addBkwPopulation(long long count);
     void estimateSigmaCrMax();
@@ -72,6 +80,13 @@ private:
     double nuDtBound(const DsmcParams& p) const;
     // Empty when p keeps ν_max Δt within what a step can do, else why not and what to change.
     std::string nuDtRefusal(const DsmcParams& p) const;
+    // The same for n particles and a (σ c_r)_max [m³/s].
+    static std::string nuDtRefusal(const DsmcParams& p, double n, double sigmaCrMax);
+    // The pairs estimateSigmaCrMax() samples, drawn from the initial state's pairs and the same random
+    // numbers; sampleVelocity(i) gives particle i's velocity.
+    template <class Velocity>
+    static double sampledSigmaCrMax(const CollisionModel& collisions, std::uint64_t seed, std::uint32_t n,
+                                    Velocity sampleVelocity);
 
     CollisionModel collisions_;
     DsmcState state_;

@@ -82,7 +82,14 @@ void TunnelModel::sortIntoCells(bool reorder) {
     const int parts = parallel ? std::max(1, omp_get_max_threads()) : 1;
     partCounts_.assign(static_cast<std::size_t>(parts) * cells, 0);
     cellStart_.assign(cells + 1, 0);
+    if (stepStart_.keeping) { // the step start's order goes aside whole; an undo swaps it back
+        stepStart_.order.swap(order_);
+        stepStart_.sorted = true;
+    }
     order_.resize(n);
+    // A stop request between the count and the scatter skips the scatter (each a pass over the
+    // molecules); an exception may not leave the parallel region, so the step is left after it.
+    bool abandon = false;
 #pragma omp parallel num_threads(parts) if (parallel)
     {
         const auto team = static_cast<std::size_t>(omp_get_num_threads());
@@ -103,14 +110,18 @@ void TunnelModel::sortIntoCells(bool reorder) {
                 }
             }
             cellStart_[cells] = running;
+            abandon = abandoningStep();
         }
-        for (std::size_t i = lo; i < hi; ++i) order_[slot[cell[i]]++] = static_cast<std::uint32_t>(i);
+        if (!abandon)
+            for (std::size_t i = lo; i < hi; ++i) order_[slot[cell[i]]++] = static_cast<std::uint32_t>(i);
     }
+    if (abandon) throw StepAbandoned();
     if (!reorder) return;
     // Now and then the arrays themselves follow the cells, so a cell's molecules share cache lines
     // (each molecule moves less than a cell per step, so the order decays slowly).
     scratch_.resize(n);
     for (std::vector<double>* column : {&state_.x, &state_.y, &state_.vx, &state_.vy, &state_.vz}) {
+        leaveIfAbandoning(); // a step's sort in the middle: the undo swaps the whole arrays back
         const std::vector<double>& source = *column;
 #pragma omp parallel for schedule(static) if (parallel)
         for (std::size_t k = 0; k < n; ++k) scratch_[k] = source[order_[k]];

@@ -43,6 +43,7 @@ void TunnelModel::checkObstacles(const TunnelParams& next, const std::vector<Obs
                                        formatNumber(next.boxWidth, 4) + "] × [0, " +
                                        formatNumber(next.boxHeight, 4) + "] m");
     }
+    model_base::requireRoomOutside(areaOf(next), obstacles); // molecules would be born inside a solid
     // The cost of a step grows with molecules × bodies; the free stream's fill is the molecule count the
     // run settles at.
     const double molecules = std::max(1.0, next.streamDensity * next.boxWidth * next.boxHeight / next.fn);
@@ -69,11 +70,11 @@ void TunnelModel::refuseParams(const TunnelParams& next) const {
                                    formatNumber(0.25 * next.dt / nuDt, 3) + " s");
 }
 
-void TunnelModel::checkBuiltState() const {
+void TunnelModel::refuseBeforeBuilding(const TunnelParams& next, std::uint64_t /*seed*/) const {
     // A preset (and the CLI's --set, which edits the preset) comes through reset, not setParams: the
-    // same bound, before any step runs.
+    // same bound, before the molecules are made.
     try {
-        refuseParams(params_);
+        refuseParams(next);
     } catch (const ParamError& e) {
         throw PresetError("params." + e.key(), withKeys(e.what()));
     }
@@ -235,6 +236,7 @@ void TunnelModel::advance(double h) {
     collide(h);
     leaveIfAbandoning();
     sampleStep(h);
+    stepStart_.keeping = false; // the step is whole: nothing to undo
 }
 
 void TunnelModel::afterStep() {

@@ -48,6 +48,12 @@ public:
     SceneView sceneView() const override;
     StateRecord saveState() const override;
     void restoreState(const StateRecord& state) override;
+    // A stop request's undo of a step (TunnelStepUndo.cpp): the move copies each chunk of molecules just
+    // before it moves it, the rest of what a step changes is small (per cell, per side, the bodies, the
+    // sampler); undoing copies back the chunks the move reached, or swaps the whole arrays back once it
+    // finished. The GPU twin keeps its state on the device and is kept whole instead.
+    bool keepStepStart() override;
+    void undoStep() override;
     const SampledFields* sampledFields() const override { return this; }
 
     // SceneTools beyond the base's obstacle edits
@@ -137,7 +143,7 @@ protected:
 
     // Protected, not private: the GL backend (gl/TunnelModelGL) steps the same state on the GPU.
     void refuseParams(const TunnelParams& next) const override;
-    void checkBuiltState() const override;
+    void refuseBeforeBuilding(const TunnelParams& next, std::uint64_t seed) const override;
     void paramsChanged(const TunnelParams& before) override;
     void checkObstacles(const TunnelParams& next, const std::vector<Obstacle>& obstacles) const override;
 
@@ -210,6 +216,30 @@ protected:
     std::int64_t sampleFrom_ = 0;              // first step of the window
     mutable long long collisionsThisStep_ = 0; // a GPU twin's hand-over sets it, as the sampler
     std::uint64_t streamCounter_ = 0;          // Philox counter of the model's random stream
+
+    // The start of the step now running, while a stop request may abandon it (keepStepStart()).
+    struct StepStart {
+        bool keeping = false;                // the step now running keeps its start
+        TunnelState molecules;               // the chunks the move reached, as it found them
+        std::vector<std::uint8_t> chunkKept; // per chunk of the move: copied (and then moved)
+        std::size_t chunkSize = 0;           // molecules per chunk of the move
+        bool moved = false;                  // the move finished: molecules holds every one
+        bool sorted = false;                 // the sort ran: order holds the step start's order_
+        std::vector<std::uint32_t> order, cellStart;
+        std::vector<double> remainder, cellSigmaCrMax, inflowRemainder, openFraction;
+        std::vector<Obstacle> obstacles;
+        ObstacleDrive obstacleDrive;
+        PistonDrive pistonDrive;
+        double pistonX = 0.0, pistonVelocity = 0.0, sigmaCrMax = 0.0;
+        bool pistonExperiment = false;
+        std::int64_t sampleFrom = 0;
+        long long collisionsThisStep = 0;
+        TunnelSampler sampler;
+    };
+    StepStart stepStart_;
+    // The move's copy of chunk c (molecules [first, end)) before it moves them, when the step keeps its
+    // start.
+    void keepChunk(std::size_t c, std::size_t first, std::size_t end);
 
 private:
     // The snapshot's plain fields (TunnelSnapshot.cpp).

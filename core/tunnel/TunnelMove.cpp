@@ -260,11 +260,22 @@ void TunnelModel::moveParticles(double h) {
     const double* const pvy = state_.vy.data();
     std::uint32_t* const pcell = state_.cell.data();
     const tunnel::BodyFrame* const frames = frames_.data();
+    const bool keeping = stepStart_.keeping;
+    if (keeping) {
+        for (std::vector<double>* column :
+             {&stepStart_.molecules.x, &stepStart_.molecules.y, &stepStart_.molecules.vx,
+              &stepStart_.molecules.vy, &stepStart_.molecules.vz})
+            column->resize(n);
+        stepStart_.molecules.cell.resize(n);
+        stepStart_.chunkKept.assign(chunks, 0);
+        stepStart_.chunkSize = kChunk;
+    }
 #pragma omp parallel for schedule(static) if (parallel)
     for (std::size_t c = 0; c < chunks; ++c) {
         if (abandoningStep()) continue; // the step is undone: skip the rest (common/StopRequest.h)
         double* impulse = bodies > 0 ? impulseChunks_.data() + c * 2 * bodies : nullptr;
         const std::size_t end = std::min(n, (c + 1) * kChunk);
+        if (keeping) keepChunk(c, c * kChunk, end);
         for (std::size_t i = c * kChunk; i < end; ++i) {
             const double x0 = px[i], y0 = py[i];
             const double x1 = x0 + pvx[i] * h, y1 = y0 + pvy[i] * h;
@@ -283,6 +294,7 @@ void TunnelModel::moveParticles(double h) {
             fly(i, 0.0, h, rng, impulse);
         }
     }
+    if (keeping && !abandoningStep()) stepStart_.moved = true;
     for (std::size_t c = 0; c < chunks; ++c)
         for (std::size_t b = 0; b < bodies; ++b) {
             const double* sum = impulseChunks_.data() + (c * bodies + b) * 2;

@@ -19,6 +19,8 @@ const ModelDescriptor& tunnelRegistration() {
         .particleCount =
             [](const Preset& preset) {
                 const TunnelParams p = withValues(TunnelParams{}, TunnelParams::fields(), preset.params);
+                // The count's open fractions take 8 bytes a cell: the cell limit first.
+                p.validate();
                 return TunnelModel::initialFillCount(p, preset.obstacles);
             },
         .series = tunnelSeriesTable().columns(),

@@ -5,6 +5,7 @@
 #include "catalog/ModelCatalog.h"
 #include "common/PhysicalConstants.h"
 #include "common/Snapshot.h"
+#include "common/StopRequest.h"
 #include "tunnel/TunnelKernels.h"
 #include "tunnel/TunnelModel.h"
 #include "tunnel/TunnelTheory.h"
@@ -15,6 +16,8 @@
 #include <numbers>
 #include <omp.h>
 #include <sstream>
+#include <chrono>
+#include <thread>
 
 using namespace pl;
 
@@ -24,6 +27,27 @@ namespace {
 class Probe : public TunnelModel {
 public:
     using TunnelModel::state_;
+};
+
+// Counts what a refusal or a stop costs: the builds of the state and the whole-state copies.
+class Counting : public TunnelModel {
+public:
+    int resets = 0;
+    mutable int saves = 0;
+    int restores = 0;
+    using TunnelModel::reset;
+    void reset() override {
+        ++resets;
+        TunnelModel::reset();
+    }
+    StateRecord saveState() const override {
+        ++saves;
+        return TunnelModel::saveState();
+    }
+    void restoreState(const StateRecord& state) override {
+        ++restores;
+        TunnelModel::restoreState(state);
+    }
 };
 
 // A small tunnel (a few thousand molecules): the defaults with these overrides.
@@ -596,6 +620,78 @@ private slots:
                  qPrintable(QString::number(moving.speed)));
         QVERIFY2(moving.highest > 0.9 * n2, qPrintable(QString::number(moving.highest)));
         QVERIFY2(whole.highest < 0.75 * n2, qPrintable(QString::number(whole.highest)));
+    }
+
+    // A preset that its parameters refuse is refused before its molecules are made (a tunnel of 4e7
+    // molecules takes seconds and gigabytes to build), and the registry's count, which the backend choice
+    // reads first, refuses a grid beyond the cell limit before it allocates the grid's open fractions.
+    void aRefusedPresetBuildsNothing() {
+        Counting model;
+        model.resets = 0;
+        try {
+            model.reset(tunnelPreset({{"dt", 1e-3}})); // ~300 collisions per molecule and step
+            QFAIL("the preset was accepted");
+        } catch (const PresetError& e) {
+            QCOMPARE(e.key(), std::string("params.dt"));
+        }
+        QCOMPARE(model.resets, 0);
+        try {
+            particleCount(tunnelPreset({{"cells_x", 4096.0}, {"cells_y", 2048.0}}));
+            QFAIL("8 M cells were counted");
+        } catch (const PresetError& e) {
+            QCOMPARE(e.key(), std::string("params.cells_x"));
+        }
+    }
+
+    // A stop request half way through a long step puts back only what the step reached, without a copy
+    // of the whole state before each step: the model is then bit for bit at the step's start, and runs
+    // on as the one that was never stopped. The requests come at several moments of the step (before
+    // it, in the move, the sort, the collisions), so the undo of each phase is exercised.
+    void aStopUndoesOnlyWhatTheStepReached() {
+        const Preset preset =
+            tunnelPreset({{"fn", 1e13}, {"sample_start", 0.0}}, {disc(0.015, 0.015, 0.003)});
+        Counting stopped;
+        stopped.reset(preset);
+        const auto twin = instantiate(preset);
+        const auto start = std::chrono::steady_clock::now();
+        twin->step();
+        const double stepSeconds =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        stopped.step();
+        InterruptibleStepper stepper(stopped, 1.0); // as after a long set-up: every step keeps its start
+        int abandoned = 0;
+        for (const double fraction : {-1.0, 0.0, 0.1, 0.3, 0.5, 0.7, 0.9}) {
+            const StateRecord before = stopped.saveState();
+            stopped.saves = stopped.restores = 0;
+            std::thread stop([&] {
+                if (fraction > 0)
+                    std::this_thread::sleep_for(std::chrono::duration<double>(fraction * stepSeconds));
+                requestStop();
+            });
+            if (fraction < 0) stop.join(); // requested before the step begins
+            const bool whole = stepper.step();
+            if (stop.joinable()) stop.join();
+            withdrawStopRequest();
+            QCOMPARE(stopped.saves, 0);
+            QCOMPARE(stopped.restores, 0);
+            if (whole) {
+                twin->step();
+                continue;
+            }
+            ++abandoned;
+            const StateRecord after = stopped.saveState();
+            QVERIFY(after.scalars == before.scalars);
+            QVERIFY(after.arrays == before.arrays);
+        }
+        QVERIFY(abandoned > 0);
+        for (int s = 0; s < 3; ++s) {
+            QVERIFY(stepper.step());
+            twin->step();
+        }
+        QCOMPARE(stopped.stepCount(), twin->stepCount());
+        const StateRecord a = stopped.saveState(), b = twin->saveState();
+        QVERIFY(a.scalars == b.scalars);
+        QVERIFY(a.arrays == b.arrays);
     }
 
     // The built-in presets build what the registry says they build.
