@@ -12,11 +12,11 @@
 
 #include <QtTest>
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <numbers>
 #include <omp.h>
 #include <sstream>
-#include <chrono>
 #include <thread>
 
 using namespace pl;
