@@ -2,6 +2,7 @@
 // machine with nothing but a GL driver. Prints one JSON line per measurement and a table at the end.
 #include "../cli/OptionChecks.h"
 #include "common/AtomicFile.h"
+#include "common/StopSignals.h"
 #include "gl/Backends.h"
 #include "gl/FluidModelGL.h"
 #include "gl/GasModelGL.h"
@@ -143,6 +144,9 @@ int main(int argc, char** argv) {
         std::cerr << "particlelab-bench: " << e.what() << "; see 'particlelab-bench --help'\n";
         return 2; // a bad option, as particlelab-cli answers it
     }
+    // A stop signal ends the checks and the GL set-up at once, saying so; once the sweep runs, it ends the
+    // sweep at the point being timed, keeping every line measured before it.
+    pl::StopSignals stop("particlelab-bench");
     // Every point is checked before the first one runs, and so is the file: a sweep never ends in either.
     struct SizeOption {
         const char* option;
@@ -202,6 +206,8 @@ int main(int argc, char** argv) {
             },
             nullptr);
     }
+    stop.runStarts();
+    const auto stopped = [&] { return stop.caught() != 0; };
     const auto& info = context->info();
     const double copy = pl::gl::measureCopyBandwidth(std::size_t{256} << 20, 5);
     emit({{"context", info.summary()}, {"copy_bandwidth_bytes_per_s", copy}});
@@ -227,6 +233,7 @@ int main(int argc, char** argv) {
                      double goal) {
         if (!selected(scene)) return;
         for (std::size_t n : sizes) {
+            if (stopped()) return;
             const pl::Preset preset = scene == "gas"     ? pl::gl::scaledGasPreset(n)
                                       : scene == "fluid" ? pl::gl::scaledFluidPreset(n)
                                                          : pl::gl::scaledTunnelPreset(n);
@@ -239,7 +246,8 @@ int main(int argc, char** argv) {
                     if (!choice.message.empty()) std::cerr << choice.message << '\n';
                     auto* gas = dynamic_cast<pl::gl::GasModelGL*>(choice.model.get());
                     if (gas) gas->setForceLanesPerDisk(lanes);
-                    const auto p = pl::gl::timeModel(*choice.model, scene, backend, settings);
+                    const auto p = pl::gl::timeModel(*choice.model, scene, backend, settings, stopped);
+                    if (stopped()) return; // the point was not timed to its end: not a measurement
                     const bool gpu = backend == "gl";
                     emit(
                         {{"scene", scene},
@@ -265,7 +273,7 @@ int main(int argc, char** argv) {
     sweep("fluid", fluidSizes, kFluidBytesPerParticleStep, copy / 700.0);
     sweep("tunnel", tunnelSizes, kTunnelBytesPerParticleStep, kTunnelGoal);
     // Where the time goes at the largest size, on a fresh model.
-    if (selected("gas") && !gasSizes.empty() && !profileEach) {
+    if (selected("gas") && !gasSizes.empty() && !profileEach && !stopped()) {
         const pl::Preset preset = pl::gl::scaledGasPreset(gasSizes.back());
         pl::gl::GasModelGL model(context);
         model.reset(preset);
@@ -282,6 +290,13 @@ int main(int argc, char** argv) {
         if (file) file->close();
     } catch (const pl::FileError& e) {
         fileFailed(e);
+    }
+    if (const int signal = stop.caught()) {
+        std::cerr << "particlelab-bench: stopped by " << pl::StopSignals::name(signal) << "; the "
+                  << points.size()
+                  << (points.size() == 1 ? " point measured until then is kept\n"
+                                         : " points measured until then are kept\n");
+        return pl::StopSignals::exitCode(signal);
     }
     return exitCode;
 }

@@ -240,7 +240,7 @@ int prepareOrRefuse(const std::string& name, const std::vector<std::string>& set
 }
 
 int runSimulation(const RunOptions& options) {
-    StopSignals stop; // a signal from here on ends the set-up at once, saying so
+    StopSignals stop("particlelab-cli"); // a signal from here on ends the set-up at once, saying so
     setThreads(options.threads);
     std::unique_ptr<Model> model;
     if (const std::string refusal =
@@ -267,6 +267,15 @@ int runSimulation(const RunOptions& options) {
         return kBadInput;
     }
     warnIfInaccurate(*model);
+    // A step known to be unstable blows up within a few steps, and even its first rows are not physics.
+    const std::string unstable = model->stabilityRefusal();
+    if (!unstable.empty() && !options.allowUnstable) {
+        std::cerr << "particlelab-cli: " << unstable << "; --allow-unstable runs it all the same\n";
+        return kBadInput;
+    }
+    if (!unstable.empty())
+        std::cerr << "particlelab-cli: warning: " << unstable
+                  << "; running it all the same (--allow-unstable), its rows are not physics\n";
     stop.runStarts(); // a signal from here on stops the run after its step, keeping what it measured
     long long sampled = 0;
     try {
@@ -280,7 +289,8 @@ int runSimulation(const RunOptions& options) {
                       << " steps long, so nothing is left to run (--steps N runs on)\n";
         const long long steps = options.steps.value_or(planned > 0 ? left : kDefaultSteps);
         const long long every = options.every.value_or(planned > 0 ? 1 : kDefaultEvery);
-        SeriesCsv series(options.out, model->seriesColumns());
+        SeriesCsv series(options.out, model->seriesColumns(),
+                         unstable.empty() ? "" : unstable + "; run with --allow-unstable");
         SurfaceCsv surface(options.surface, model->seriesColumns());
         Progress progress(steps, !options.quiet);
         // The health is checked before each row is kept, so no row of an exploded state is written.
@@ -405,38 +415,18 @@ int loschmidtEcho(const EchoOptions& options) {
     return writeOrPrint(options.out, csv.str());
 }
 
-int benchmark(const BenchOptions& options) {
-    setThreads(options.threads);
-    std::unique_ptr<Model> model;
-    try {
-        model = prepare(options.preset, options.sets, std::nullopt, options.backend);
-    } catch (const std::exception& e) {
-        std::cerr << "particlelab-cli: " << e.what() << "\n";
-        return kBadInput;
-    }
-    warnIfInaccurate(*model);
-    // Warm-up: caches, page faults, the first cell-list allocation.
-    for (long long s = 0; s < std::min<long long>(options.steps / 10 + 1, 200); ++s) model->step();
-    std::vector<double> seconds;
-    resetThreadStepCounts();
-    for (int r = 0; r < options.repeats; ++r) {
-        const auto start = Clock::now();
-        for (long long s = 0; s < options.steps; ++s) model->step();
-        model->finishPendingWork();
-        seconds.push_back(secondsSince(start));
-    }
-    model->checkHealthNow();
-    if (auto failure = model->failure()) {
-        std::cerr << "particlelab-cli: the model stopped: " << failure->message() << "\n";
-        return kModelFailed;
-    }
+namespace {
+
+// The bench's JSON line: the median of the timed repeats (at least one) and what ran them.
+nlohmann::ordered_json benchLine(const BenchOptions& options, const Model& model,
+                                 const std::vector<double>& seconds) {
     std::vector<double> sorted = seconds;
     std::sort(sorted.begin(), sorted.end());
     const double median = sorted[sorted.size() / 2];
-    const auto particles = static_cast<double>(model->particleCount());
+    const auto particles = static_cast<double>(model.particleCount());
     nlohmann::ordered_json line;
     line["preset"] = options.preset;
-    line["particles"] = model->particleCount();
+    line["particles"] = model.particleCount();
     line["steps"] = options.steps;
     line["seconds"] = median;
     line["seconds_all"] = seconds;
@@ -446,8 +436,49 @@ int benchmark(const BenchOptions& options) {
     line["thread_policy"] = policy.adaptive ? "adaptive" : "fixed";
     // Adaptive: how many timed steps ran on each team size (index: threads).
     if (policy.adaptive) line["steps_at_threads"] = threadStepCounts();
-    line["backend"] = model->backend();
-    std::cout << line.dump() << std::endl;
+    line["backend"] = model.backend();
+    return line;
+}
+
+} // namespace
+
+int benchmark(const BenchOptions& options) {
+    StopSignals stop("particlelab-cli"); // a signal from here on ends the set-up at once, saying so
+    setThreads(options.threads);
+    std::unique_ptr<Model> model;
+    try {
+        model = prepare(options.preset, options.sets, std::nullopt, options.backend);
+    } catch (const std::exception& e) {
+        std::cerr << "particlelab-cli: " << e.what() << "\n";
+        return kBadInput;
+    }
+    warnIfInaccurate(*model);
+    stop.runStarts(); // a signal from here on ends the timing, keeping the repeats it finished
+    // Warm-up: caches, page faults, the first cell-list allocation.
+    for (long long s = 0; s < std::min<long long>(options.steps / 10 + 1, 200) && !stop.caught(); ++s)
+        model->step();
+    std::vector<double> seconds;
+    resetThreadStepCounts();
+    for (int r = 0; r < options.repeats && !stop.caught(); ++r) {
+        const auto start = Clock::now();
+        long long s = 0;
+        for (; s < options.steps && !stop.caught(); ++s) model->step();
+        model->finishPendingWork();
+        if (s == options.steps) seconds.push_back(secondsSince(start)); // a repeat cut short times nothing
+    }
+    model->checkHealthNow();
+    if (auto failure = model->failure()) {
+        std::cerr << "particlelab-cli: the model stopped: " << failure->message() << "\n";
+        return kModelFailed;
+    }
+    if (const int signal = stop.caught()) {
+        if (!seconds.empty()) std::cout << benchLine(options, *model, seconds).dump() << std::endl;
+        std::cerr << "particlelab-cli: stopped by " << StopSignals::name(signal) << "; the " << seconds.size()
+                  << " of " << options.repeats << " timed repeats finished until then "
+                  << (seconds.empty() ? "(none: nothing is printed)\n" : "are in the line printed\n");
+        return StopSignals::exitCode(signal);
+    }
+    std::cout << benchLine(options, *model, seconds).dump() << std::endl;
     return kOk;
 }
 

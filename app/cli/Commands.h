@@ -34,6 +34,7 @@ struct RunOptions {
     std::string snapshot;         // the full state at the end (also when stopped), to continue from
     std::string backend = "auto"; // cpu, gl or auto
     bool quiet = false;
+    bool allowUnstable = false; // run a step known to be unstable (Model::stabilityRefusal) all the same
 };
 
 struct BenchOptions {

@@ -166,7 +166,7 @@ int dataFolderRefusal(const std::string& dataDir) {
 } // namespace
 
 int recordClip(const RecordOptions& options) {
-    StopSignals stop; // a signal from here on ends the set-up at once, saying so
+    StopSignals stop("particlelab-cli"); // a signal from here on ends the set-up at once, saying so
     setThreads(options.threads);
     ui::ClipFormat format{};
     int width = 0, height = 0;
@@ -272,7 +272,7 @@ int recordClip(const RecordOptions& options) {
 }
 
 int writeReport(const ReportOptions& options) {
-    StopSignals stop;
+    StopSignals stop("particlelab-cli");
     setThreads(options.threads);
     if (!ui::isReportPath(QString::fromStdString(options.out))) {
         std::cerr << "particlelab-cli: --out '" << options.out << "' needs the suffix .pdf or .html\n";

@@ -1,42 +1,15 @@
-// Signal handling and the streamed time series (and body forces) of the CLI's run.
+// The streamed time series (and body forces) of the CLI's run.
 #include "RunSupport.h"
 
-#include "common/StopRequest.h"
 #include "common/TimeSeries.h"
 
 #include <algorithm>
-#include <csignal>
 #include <sstream>
 #include <stdexcept>
-#include <unistd.h>
 
 namespace pl::cli {
 
 namespace {
-
-volatile std::sig_atomic_t caughtSignal = 0;
-volatile std::sig_atomic_t settingUp = 0;
-
-// What a signal during the set-up says; written with write(2), which a signal handler may call.
-constexpr char kSetUpStoppedByInt[] =
-    "particlelab-cli: stopped by SIGINT while setting up the experiment; nothing was written\n";
-constexpr char kSetUpStoppedByTerm[] =
-    "particlelab-cli: stopped by SIGTERM while setting up the experiment; nothing was written\n";
-
-extern "C" void onStopSignal(int signal) {
-    if (settingUp) {
-        const bool interrupt = signal == SIGINT;
-        [[maybe_unused]] const ssize_t written =
-            ::write(2, interrupt ? kSetUpStoppedByInt : kSetUpStoppedByTerm,
-                    interrupt ? sizeof kSetUpStoppedByInt - 1 : sizeof kSetUpStoppedByTerm - 1);
-        ::_exit(128 + signal);
-    }
-    caughtSignal = signal;
-    requestStop(); // a step of minutes polls it and is undone (common/StopRequest.h)
-}
-
-struct sigaction previous[2];
-constexpr int kStopSignals[2] = {SIGINT, SIGTERM};
 
 const std::vector<std::string> kSurfaceColumns{"step", "time", "drag", "lift"};
 const std::vector<std::string> kForceColumns{"drag", "lift"}; // taken from the series
@@ -60,44 +33,12 @@ std::vector<std::size_t> forceColumnsIn(const std::vector<std::string>& seriesCo
 
 } // namespace
 
-StopSignals::StopSignals() {
-    caughtSignal = 0;
-    withdrawStopRequest();
-    settingUp = 1;
-    struct sigaction action {};
-    action.sa_handler = onStopSignal;
-    sigemptyset(&action.sa_mask);
-    action.sa_flags = SA_RESETHAND; // a second signal finds the default action: it ends the process
-    for (int i = 0; i < 2; ++i) sigaction(kStopSignals[i], &action, &previous[i]);
-}
-
-StopSignals::~StopSignals() {
-    for (int i = 0; i < 2; ++i) sigaction(kStopSignals[i], &previous[i], nullptr);
-    settingUp = 0;
-}
-
-void StopSignals::runStarts() {
-    settingUp = 0;
-}
-
-int StopSignals::caught() const {
-    return caughtSignal;
-}
-
-std::string StopSignals::name(int signal) {
-    switch (signal) {
-    case SIGINT:
-        return "SIGINT";
-    case SIGTERM:
-        return "SIGTERM";
-    }
-    return "signal " + std::to_string(signal);
-}
-
-SeriesCsv::SeriesCsv(const std::string& path, const std::vector<std::string>& columns) {
+SeriesCsv::SeriesCsv(const std::string& path, const std::vector<std::string>& columns,
+                     const std::string& warning) {
     if (path.empty()) return;
     file_ = std::make_unique<StreamedFile>(path);
     std::ostringstream header;
+    if (!warning.empty()) header << "# warning: " << warning << '\n';
     for (std::size_t c = 0; c < columns.size(); ++c) header << (c ? "," : "") << columns[c];
     header << '\n';
     file_->write(header.str());

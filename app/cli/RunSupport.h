@@ -1,10 +1,11 @@
-// What a CLI run needs to lose nothing: SIGINT and SIGTERM end its set-up at once with a sentence and stop
-// its steps between two, and the time series (and the wind tunnel's body forces) go to their files row by
-// row as they are sampled.
+// What a CLI run needs to lose nothing: the stop signals end its set-up at once with a sentence and stop
+// its steps between two (common/StopSignals.h), and the time series (and the wind tunnel's body forces) go
+// to their files row by row as they are sampled, whole rows only.
 #pragma once
 
 #include "common/AtomicFile.h"
 #include "common/Model.h"
+#include "common/StopSignals.h"
 
 #include <memory>
 #include <string>
@@ -12,29 +13,14 @@
 
 namespace pl::cli {
 
-// Catches SIGINT and SIGTERM for the life of the object. While the experiment is set up (reading, checks,
-// building the model: nothing is written yet) a signal ends the process at once with one sentence on
-// stderr and the shell's exit code (130, 143). Once runStarts() is called, the first one asks the run to
-// stop after its current step; a second one of the same kind ends the process at once, as without this.
-class StopSignals {
-public:
-    StopSignals();
-    ~StopSignals();
-    StopSignals(const StopSignals&) = delete;
-    StopSignals& operator=(const StopSignals&) = delete;
-
-    void runStarts(); // from here a signal is caught() instead of ending the set-up
-
-    int caught() const;                                      // the signal's number, 0 while none came
-    static std::string name(int signal);                     // "SIGINT"
-    static int exitCode(int signal) { return 128 + signal; } // the shell's convention: 130, 143
-};
-
 // The time series CSV: header first, then each row as it is sampled, written through to the file at
-// once. Without a path nothing is formatted or kept.
+// once, whole rows only (StreamedFile). A warning, when given, comes before the header as one comment
+// line, "# warning: …" (a run the user insisted on: --allow-unstable). Without a path nothing is
+// formatted or kept.
 class SeriesCsv {
 public:
-    SeriesCsv(const std::string& path, const std::vector<std::string>& columns);
+    SeriesCsv(const std::string& path, const std::vector<std::string>& columns,
+              const std::string& warning = {});
     void append(const std::vector<double>& row);
     void close();
     long long rows() const { return rows_; }

@@ -87,6 +87,9 @@ int main(int argc, char** argv) {
                      "Full state at the end (also when stopped); `run FILE` continues from it exactly")
         ->check(fileName());
     runCmd->add_flag("--quiet", run.quiet, "No progress line");
+    runCmd->add_flag("--allow-unstable", run.allowUnstable,
+                     "Run a step known to be unstable (the gas: dt·ω above its integrator's limit) instead "
+                     "of refusing it (exit 2); warned on stderr and in the first line of --out");
     runCmd
         ->add_option("--backend", run.backend,
                      "cpu, gl (OpenGL 4.3 compute) or auto (the GPU for large scenes)")

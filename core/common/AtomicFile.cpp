@@ -283,10 +283,16 @@ void StreamedFile::write(std::string_view text) {
         const ssize_t n = ::write(fd_, text.data() + written, text.size() - written);
         if (n < 0) {
             if (errno == EINTR) continue;
-            throw FileError("cannot write '" + path_ + "': " + systemReason());
+            const std::string reason = systemReason();
+            // A piece that did not fit (a full disk) is taken back whole: the file ends with the last
+            // whole piece (a row), never half of one. Shortening needs no space, so it works on a full disk.
+            if (written > 0 && ::ftruncate(fd_, static_cast<off_t>(size_)) == 0)
+                ::lseek(fd_, static_cast<off_t>(size_), SEEK_SET);
+            throw FileError("cannot write '" + path_ + "': " + reason);
         }
         written += static_cast<std::size_t>(n);
     }
+    size_ += written;
 }
 
 void StreamedFile::close() {

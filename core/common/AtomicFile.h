@@ -49,7 +49,8 @@ std::string readWholeFile(const std::string& path, std::size_t maxBytes = kMaxSn
 
 // A file written piece by piece where each piece reaches the operating system at once (no buffer in the
 // process), so a killed or interrupted process leaves every piece it wrote: the CLI's time series,
-// one row per sample. It opens the target (outputTarget) truncated, keeping its permissions, and
+// one row per sample. A piece is whole or absent: one that fails half way (a full disk) is cut off
+// again before write() throws. It opens the target (outputTarget) truncated, keeping its permissions, and
 // refuses a target that is not a regular file. Throws FileError naming the path.
 class StreamedFile {
 public:
@@ -65,6 +66,7 @@ public:
 private:
     std::string path_;
     int fd_ = -1;
+    std::size_t size_ = 0; // bytes of the whole pieces written [bytes]
 };
 
 } // namespace pl

@@ -96,6 +96,11 @@ public:
     // A sentence when the current parameters make the method inaccurate though it still runs (DSMC: ν Δt
     // above Bird's guideline), naming what to change; empty otherwise.
     virtual std::string accuracyWarning() const { return {}; }
+    // A sentence when the current parameters put every step beyond a known stability bound (the gas:
+    // dt·ω above its integrator's limit), naming the parameters and values that fit; empty otherwise.
+    // Such a run blows up within a few steps, and its first rows already are not physics: the CLI
+    // refuses it before the first step unless the user insists (`run --allow-unstable`).
+    virtual std::string stabilityRefusal() const { return {}; }
 
     // One row of observables per call, matching seriesColumns(); may close accumulation windows.
     virtual std::vector<std::string> seriesColumns() const = 0;

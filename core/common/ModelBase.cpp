@@ -26,6 +26,28 @@ void requireCentresInside(const Area& area, const std::vector<Obstacle>& obstacl
     }
 }
 
+// Probes per side of the room check: a free gap narrower than 1/64 of the box can be missed, and such
+// a gap is no room for a scene's particles either.
+constexpr int kRoomProbes = 64;
+
+void requireRoomOutside(const Area& area, const std::vector<Obstacle>& obstacles) {
+    if (obstacles.empty()) return;
+    const double width = area.right - area.left, height = area.top - area.bottom;
+    const auto free = [&](double x, double y) {
+        for (const Obstacle& o : obstacles)
+            if (o.contains(x, y, 0.0)) return false;
+        return true;
+    };
+    for (int i = 0; i < kRoomProbes; ++i)
+        for (int j = 0; j < kRoomProbes; ++j)
+            if (free(area.left + (i + 0.5) / kRoomProbes * width,
+                     area.bottom + (j + 0.5) / kRoomProbes * height))
+                return;
+    throw PresetError("obstacles",
+                      "the obstacles cover the whole box: no room is left for the particles; make "
+                      "them smaller or fewer");
+}
+
 void refuseMissingPiston(const std::string& why) {
     throw std::logic_error(why);
 }

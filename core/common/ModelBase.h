@@ -31,6 +31,10 @@ void requireTimeDirection(int direction, bool reversible);
 void requireObstacleIndex(std::size_t index, std::size_t count);
 // Throws PresetError ("obstacles[i]") for the first obstacle whose centre lies outside the area.
 void requireCentresInside(const Area& area, const std::vector<Obstacle>& obstacles);
+// Throws PresetError ("obstacles") when the obstacles together cover the whole area, so no particle
+// could be placed or enter: judged on a kRoomProbes × kRoomProbes grid of points, one at each grid
+// cell's centre, of which at least one must lie outside every obstacle.
+void requireRoomOutside(const Area& area, const std::vector<Obstacle>& obstacles);
 // Throws std::logic_error: the scene has no piston (or it is switched off).
 [[noreturn]] void refuseMissingPiston(const std::string& why);
 // v → √factor v for every particle: kinetic energy × factor. Throws std::invalid_argument unless
@@ -175,7 +179,7 @@ protected:
         record.put("time", time_);
     }
     void restoreClock(const StateRecord& record) {
-        step_ = static_cast<std::int64_t>(record.scalar("step"));
+        step_ = record.count("step"); // a whole number from 0 to 2⁵³, refused otherwise
         time_ = record.scalar("time");
         failure_.reset();
     }
@@ -268,6 +272,7 @@ protected:
     // entry otherwise); a scene with more rules (the tunnel's body sizes) overrides this.
     void checkObstacles(const Params& next, const std::vector<Obstacle>& obstacles) const override {
         model_base::requireCentresInside(areaOf(next), obstacles);
+        model_base::requireRoomOutside(areaOf(next), obstacles);
     }
     Area toolArea() const { return areaOf(this->params_); }
     // After an obstacle was added, removed or placed by hand (the state is pulled).

@@ -71,6 +71,7 @@ public:
     using ModelBase::reset;
     void reset() override;
     void checkHealthNow() override { checkHealth(true); }
+    std::string stabilityRefusal() const override; // GasStability.cpp
     std::vector<std::string> seriesColumns() const override;
     std::vector<double> sampleSeries() override;
     std::vector<NamedHistogram> histograms() const override;
@@ -164,7 +165,8 @@ protected:
     // Health (GasStability.cpp)
     void checkHealth(bool energyCheck);
     std::string stabilityHint() const;
-    void rebaseEnergy(); // after a user change: the new energy is the reference
+    double stiffestContactOmega() const; // ω [1/T] of the stiffest contact between the species present
+    void rebaseEnergy();                 // after a user change: the new energy is the reference
 
     void populationChanged(); // after spawning or removing: counts, cells, forces, energy reference
     bool overlapsTooMuch(double x, double y, double diameter) const;

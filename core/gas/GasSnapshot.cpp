@@ -75,10 +75,14 @@ void GasModel::restoreState(const StateRecord& r) {
     list.payload = r.array<std::uint8_t>("neighbours_payload", list.entries.size());
     list.builtX = r.array<double>("neighbours_built_x");
     list.builtY = r.array<double>("neighbours_built_y", list.builtX.size());
-    if (list.valid && (list.offsets.size() != n + 1 || list.builtX.size() != n ||
-                       list.offsets.back() != list.entries.size()))
+    if (list.valid && (list.offsets.size() != n + 1 || list.builtX.size() != n))
         throw PresetError("state.neighbours_offsets",
                           "the snapshot's neighbour list does not fit its particles");
+    // Rows are read from the offsets even in a list waiting to be rebuilt: each row must lie in entries.
+    if (!list.offsets.empty() && (list.offsets.front() != 0 || list.offsets.back() != list.entries.size() ||
+                                  !std::is_sorted(list.offsets.begin(), list.offsets.end())))
+        throw PresetError("state.neighbours_offsets",
+                          "state.neighbours_offsets must rise from 0 to the number of entries");
     // An invalid list (all-pairs forces never rebuild it) is rebuilt before use: stale entries are harmless.
     for (const std::uint32_t j : list.entries)
         if (list.valid && j >= n)

@@ -52,14 +52,36 @@ void GasModel::rebaseEnergy() {
     referenceEnergy_ = std::max(referenceEnergy_, e);
 }
 
-std::string GasModel::stabilityHint() const {
-    double omega = 0.0; // stiffest contact: the smallest reduced mass present
+double GasModel::stiffestContactOmega() const {
+    double omega = 0.0; // the smallest reduced mass present
     const bool hasA = params_.a.count > 0, hasB = params_.b.count > 0;
     if (hasA || !hasB)
         omega = std::max(omega, gas::contactOmega(params_.stiffness, params_.a.mass, params_.a.mass));
     if (hasB) omega = std::max(omega, gas::contactOmega(params_.stiffness, params_.b.mass, params_.b.mass));
     if (hasA && hasB)
         omega = std::max(omega, gas::contactOmega(params_.stiffness, params_.a.mass, params_.b.mass));
+    return omega;
+}
+
+std::string GasModel::stabilityRefusal() const {
+    const GasIntegratorInfo& scheme = gasIntegrator(integrator_);
+    const double limit = scheme.stabilityLimit;
+    // Explicit Euler has no stable dt at all: it is there to show its energy growing, slowly at small dt.
+    if (!(limit > 0)) return {};
+    const double wdt = stiffestContactOmega() * std::abs(params_.dt);
+    const auto [shownWdt, shownLimit] = distinct(wdt, limit);
+    if (!(wdt > limit) || shownWdt == shownLimit) return {}; // at the limit, as shown: the hint's case
+    // ω ∝ √k, so dt·ω falls to the limit at dt × limit / (dt·ω) or at k × (limit / (dt·ω))².
+    const double share = kSafeShareOfLimit * limit / wdt;
+    return "dt·ω = " + shownWdt + " > " + shownLimit + ": " + scheme.name +
+           " is unstable at these settings (a contact gains energy at every step); use dt ≤ " +
+           formatNumber(share * std::abs(params_.dt), 3) + " or stiffness ≤ " +
+           formatNumber(share * share * params_.stiffness, 3) + " (" +
+           formatNumber(100 * kSafeShareOfLimit, 2) + " % of the limit)";
+}
+
+std::string GasModel::stabilityHint() const {
+    const double omega = stiffestContactOmega();
     const double wdt = omega * std::abs(params_.dt);
     const GasIntegratorInfo& scheme = gasIntegrator(integrator_);
     const double limit = scheme.stabilityLimit;

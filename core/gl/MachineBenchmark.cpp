@@ -6,6 +6,7 @@
 #include "GlProgram.h"
 #include "TunnelModelGL.h"
 #include "catalog/ModelCatalog.h"
+#include "fluid/FluidParams.h"
 #include "tunnel/TunnelModel.h"
 
 #include <algorithm>
@@ -30,9 +31,10 @@ struct BatchTime {
     double issueSeconds = 0;
 };
 
-BatchTime timeBatch(Model& model, int steps) {
+// Steps a batch; a cancel() that turns true ends it early (its time then measures nothing).
+BatchTime timeBatch(Model& model, int steps, const std::function<bool()>& cancel) {
     const auto start = Clock::now();
-    for (int s = 0; s < steps; ++s) model.step();
+    for (int s = 0; s < steps && !(cancel && cancel()); ++s) model.step();
     const auto issued = Clock::now();
     model.finishPendingWork();
     return {std::chrono::duration<double>(Clock::now() - start).count(),
@@ -72,6 +74,11 @@ Preset scaledFluidPreset(std::size_t n) {
     // (BENCHMARKS.md, "GPU backends", "Against the goals").
     const double rows = std::min(std::ceil(std::sqrt(static_cast<double>(n))), kFluidRows);
     const double width = std::ceil(static_cast<double>(n) / rows) * spacing, height = rows * spacing;
+    // Room beside the block for it to spread, within what the parameters allow at both ends of the range:
+    // at least 4 h across (a smaller box cannot hold the kernel's support), at most the box_width bound.
+    const double widest = findSpec(FluidParams::describe(), "box_width")->max;
+    const double boxWidth = std::clamp(2.0 * width + 1.0, 4.0 * h + 1.0, widest);
+    const double boxHeight = std::max(1.5 * height + 1.0, 4.0 * h + 1.0);
     p.params = {{"kernel", std::string("2d")},
                 {"self_density", true},
                 {"rest_density_source", std::string("spawn-lattice")},
@@ -81,8 +88,8 @@ Preset scaledFluidPreset(std::size_t n) {
                 {"particle_radius", 0.2},
                 {"iterations", 5.0},
                 {"dt", 0.01},
-                {"box_width", 2.0 * width + 1.0},
-                {"box_height", 1.5 * height + 1.0},
+                {"box_width", boxWidth},
+                {"box_height", boxHeight},
                 {"fill_x0", 0.0},
                 {"fill_y0", 0.0},
                 {"fill_x1", width},
@@ -97,10 +104,17 @@ Preset scaledTunnelPreset(std::size_t n) {
     params = withValues(params, TunnelParams::fields(), p.params);
     const double preset = static_cast<double>(TunnelModel::initialFillCount(params, p.obstacles));
     const double ratio = static_cast<double>(std::max<std::size_t>(n, 1)) / std::max(preset, 1.0);
-    const double refine = std::sqrt(ratio);
-    p.params["fn"] = params.fn / ratio;
-    p.params["cells_x"] = std::max(1.0, std::round(static_cast<double>(params.cellsX) * refine));
-    p.params["cells_y"] = std::max(1.0, std::round(static_cast<double>(params.cellsY) * refine));
+    // The grid refines with √ratio (the molecules per cell stay), up to the tunnel's cell limit.
+    const double cells = static_cast<double>(params.cellsX) * static_cast<double>(params.cellsY);
+    const double refine = std::min(std::sqrt(ratio), std::sqrt(TunnelParams::maxCells() / cells));
+    // The free stream over the whole domain must fit the molecule limit (TunnelParams::validate), which the
+    // body's share of the domain leaves room for below the top of the range only.
+    const double fullStream = params.streamDensity * params.boxWidth * params.boxHeight;
+    p.params["fn"] = std::max(params.fn / ratio, fullStream / TunnelParams::maxParticles() * (1.0 + 1e-12));
+    const double cellsX = std::max(1.0, std::round(static_cast<double>(params.cellsX) * refine));
+    const double cellsY = std::max(1.0, std::round(static_cast<double>(params.cellsY) * refine));
+    p.params["cells_x"] = cellsX;
+    p.params["cells_y"] = std::min(cellsY, std::floor(TunnelParams::maxCells() / cellsX)); // rounding up
     p.params["run_steps"] = 0.0;
     return p;
 }
@@ -111,15 +125,16 @@ BenchPoint timeModel(Model& model, const std::string& scene, const std::string& 
     point.scene = scene;
     point.backend = backend;
     point.particles = model.particleCount();
-    const double warm = timeBatch(model, settings.warmupSteps).seconds;
+    const double warm = timeBatch(model, settings.warmupSteps, cancel).seconds;
     double perStep = std::max(warm / std::max(settings.warmupSteps, 1), 1e-7);
     // A GPU that idled (while the host built the initial state, or ran CPU models) runs its passes up to
     // 3x slower for seconds after it is loaded again (BENCHMARKS.md, "The slow start of a GPU point"):
     // keep stepping in short batches until two in a row agree, so the repeats time the steady state.
     const auto settleStart = Clock::now();
     for (double previous = 0.0;;) {
+        if (cancel && cancel()) return point;
         const int batch = std::max(settings.minSteps, static_cast<int>(kSettleBatchSeconds / perStep));
-        perStep = std::max(timeBatch(model, batch).seconds / batch, 1e-7);
+        perStep = std::max(timeBatch(model, batch, cancel).seconds / batch, 1e-7);
         const double elapsed = std::chrono::duration<double>(Clock::now() - settleStart).count();
         if (std::abs(perStep - previous) < kSettledTolerance * perStep || elapsed > settings.maxSettleSeconds)
             break;
@@ -132,7 +147,8 @@ BenchPoint timeModel(Model& model, const std::string& scene, const std::string& 
     std::vector<double> rates, issue;
     for (int r = 0; r < settings.repeats; ++r) {
         if (cancel && cancel()) return point;
-        const BatchTime t = timeBatch(model, steps);
+        const BatchTime t = timeBatch(model, steps, cancel);
+        if (cancel && cancel()) return point;
         rates.push_back(steps / t.seconds);
         point.repeatMicrosecondsPerStep.push_back(1e6 * t.seconds / steps);
         issue.push_back(1e6 * t.issueSeconds / steps);

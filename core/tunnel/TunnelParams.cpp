@@ -25,6 +25,10 @@ double bytesPerCell(const TunnelParams& p) {
 }
 } // namespace
 
+double TunnelParams::maxCells() {
+    return kMaxCells;
+}
+
 double TunnelParams::maxParticles() {
     return 1 << 26; // 67 M molecules: 44 bytes each, 3 GB
 }

@@ -79,6 +79,7 @@ struct TunnelParams {
 
     double mass() const;          // [kg]
     static double maxParticles(); // molecules a run may hold
+    static double maxCells();     // cells_x × cells_y a run may have
     // maxParticles(), or fewer where the memory this machine can give the run now ends first
     // (common/MemoryBudget.h).
     double moleculeLimit() const;

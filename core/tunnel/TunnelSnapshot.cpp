@@ -54,7 +54,10 @@ void TunnelModel::restoreState(const StateRecord& r) {
     for (std::size_t i = 0; i < n; ++i)
         if (!(s.x[i] >= 0 && s.x[i] <= params_.boxWidth && s.y[i] >= 0 && s.y[i] <= params_.boxHeight))
             throw PresetError("state.x", "molecule " + std::to_string(i) + " lies outside the tunnel");
-    const int direction = static_cast<int>(r.scalar("piston_direction"));
+    const double pistonDirection = r.scalar("piston_direction");
+    if (pistonDirection != -1.0 && pistonDirection != 0.0 && pistonDirection != 1.0)
+        throw PresetError("state.piston_direction", "state.piston_direction must be −1, 0 or 1");
+    const int direction = static_cast<int>(pistonDirection);
     // The NTC and inflow remainders are fractions of a molecule or pair; a (σ c_r)_max far beyond any
     // the gas reaches would make a step of billions of candidates.
     for (const char* key : {"remainder", "inflow_remainder"})
