@@ -1,7 +1,8 @@
 // particlelab-cli record and the app's recorder, checked by decoding what it wrote: ffprobe for the codec,
 // frame count, size and duration; libavcodec in this test for a frame of MP4 and WebM against the off-screen
 // render of the same state (PSNR); the GIF's frame count and loop; a SIGINT leaves a clip with the frames so
-// far; bad options are refused with exit 2 before anything is written.
+// far, and a SIGKILL one that decodes without error up to about its last second; bad options are refused
+// with exit 2 before anything is written.
 #include "CliRunner.h"
 
 #include "SimulationController.h"
@@ -28,7 +29,14 @@ extern "C" {
 
 #include <cmath>
 #include <csignal>
+#include <cstdlib>
+#include <fcntl.h>
+#include <poll.h>
+#include <spawn.h>
+#include <sys/wait.h>
 #include <unistd.h>
+
+extern char** environ;
 
 using pl::test::runCli;
 using pl::test::runProgram;
@@ -46,6 +54,7 @@ struct Probe {
     int width = 0, height = 0;
     long long frames = -1;
     double duration = -1; // [s]
+    QString errors;       // what ffprobe reported while it demuxed and decoded every frame
 };
 
 Probe ffprobe(const QString& path) {
@@ -60,6 +69,7 @@ Probe ffprobe(const QString& path) {
     p.height = stream["height"].toInt();
     p.frames = stream["nb_read_frames"].toString("-1").toLongLong();
     p.duration = root["format"].toObject()["duration"].toString("-1").toDouble();
+    p.errors = r.err.trimmed();
     return p;
 }
 
@@ -183,6 +193,96 @@ QStringList recordArgs(const QString& out, double seconds = 1.0, const QStringLi
     }
     return args;
 }
+
+// Whether a GIF's bytes end just after a whole block (the header, an extension, an image with all its
+// data), with or without the trailer: a decoder then reads every frame whole. FFmpeg decodes a frame cut
+// short without a word, so ffprobe alone cannot tell.
+bool gifEndsAfterAWholeBlock(const QByteArray& gif) {
+    const auto byte = [&gif](qsizetype at) { return static_cast<unsigned char>(gif.at(at)); };
+    const auto subBlocks = [&](qsizetype at) { // past the sub-blocks from `at`, or -1 where they are cut
+        while (at < gif.size() && byte(at) != 0) at += 1 + byte(at);
+        return at < gif.size() ? at + 1 : -1;
+    };
+    if (gif.size() < 13) return false;
+    qsizetype at = 13 + ((byte(10) & 0x80) ? 3 * (2 << (byte(10) & 7)) : 0); // the global colour table
+    while (at >= 0 && at < gif.size()) {
+        if (byte(at) == 0x3b) return at + 1 == gif.size(); // the trailer ends a finished GIF
+        if (byte(at) == 0x21) {
+            at = at + 2 < gif.size() ? subBlocks(at + 2) : -1;
+        } else if (byte(at) == 0x2c && at + 10 < gif.size()) {
+            const int flags = byte(at + 9);
+            at += 10 + ((flags & 0x80) ? 3 * (2 << (flags & 7)) : 0) + 1; // a local table, the code size
+            at = at <= gif.size() ? subBlocks(at) : -1;
+        } else {
+            return false;
+        }
+    }
+    return at == gif.size();
+}
+
+// particlelab-cli with its stderr on a pseudo-terminal, as in a terminal window: there it draws its
+// progress line ("\rframe 75/15000"), which says how many frames the recording has made so far.
+class TerminalRun {
+public:
+    explicit TerminalRun(const QStringList& args) {
+        master_ = ::posix_openpt(O_RDWR | O_NOCTTY | O_CLOEXEC);
+        if (master_ < 0 || ::grantpt(master_) != 0 || ::unlockpt(master_) != 0) return;
+        std::vector<QByteArray> words{QByteArray(PARTICLELAB_CLI)};
+        for (const QString& arg : args) words.push_back(arg.toLocal8Bit());
+        std::vector<char*> argv;
+        for (QByteArray& word : words) argv.push_back(word.data());
+        argv.push_back(nullptr);
+        posix_spawn_file_actions_t actions;
+        posix_spawn_file_actions_init(&actions);
+        posix_spawn_file_actions_addopen(&actions, 0, "/dev/null", O_RDONLY, 0);
+        posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
+        posix_spawn_file_actions_addopen(&actions, 2, ::ptsname(master_), O_RDWR | O_NOCTTY, 0);
+        if (::posix_spawn(&pid_, argv[0], &actions, nullptr, argv.data(), environ) != 0) pid_ = -1;
+        posix_spawn_file_actions_destroy(&actions);
+    }
+    ~TerminalRun() {
+        kill();
+        if (master_ >= 0) ::close(master_);
+    }
+    TerminalRun(const TerminalRun&) = delete;
+    TerminalRun& operator=(const TerminalRun&) = delete;
+
+    bool started() const { return pid_ > 0; }
+    // Reads the progress line until it counts `frame` frames or more, the program ends or timeoutMs
+    // passes; returns the last count read.
+    long long waitForFrame(long long frame, int timeoutMs) {
+        QElapsedTimer clock;
+        clock.start();
+        while (frames_ < frame && clock.elapsed() < timeoutMs) {
+            pollfd ready{master_, POLLIN, 0};
+            if (::poll(&ready, 1, 100) <= 0) continue;
+            char buffer[4096];
+            const ssize_t n = ::read(master_, buffer, sizeof buffer);
+            if (n <= 0) break; // no writer left: the program ended
+            line_.append(buffer, static_cast<qsizetype>(n));
+            const qsizetype slash = line_.lastIndexOf('/');
+            const qsizetype word = slash > 0 ? line_.lastIndexOf("frame ", slash) : -1;
+            if (word >= 0) frames_ = line_.mid(word + 6, slash - word - 6).toLongLong();
+            line_ = line_.mid(std::max<qsizetype>(0, line_.lastIndexOf('\r'))); // the line being drawn
+        }
+        return frames_;
+    }
+    // Ends it with SIGKILL, which it cannot catch; true when that is what ended it.
+    bool kill() {
+        if (pid_ <= 0) return false;
+        ::kill(pid_, SIGKILL);
+        int status = 0;
+        const bool waited = ::waitpid(pid_, &status, 0) == pid_;
+        pid_ = -1;
+        return waited && WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL;
+    }
+
+private:
+    pid_t pid_ = -1;
+    int master_ = -1;
+    QByteArray line_;
+    long long frames_ = 0;
+};
 
 } // namespace
 
@@ -445,6 +545,43 @@ private slots:
         const Probe probe = ffprobe(out);
         QCOMPARE(probe.frames, match.captured(1).toLongLong());
         QVERIFY(probe.frames > 0 && probe.frames < 600LL * kFps);
+    }
+
+    // A recording killed outright (SIGKILL: `kill -9`, the out-of-memory killer) runs no handler and
+    // finishes nothing: what is on disk must decode as it is, without an error, and hold every frame but
+    // about the last second's. The container writes whole pieces of at most a second (an MP4 fragment, a
+    // WebM cluster, a GIF frame), so the open piece and the few frames in the encoder (x264's look-ahead)
+    // and in the writer's queue are lost: two seconds of frames at most.
+    void aKilledRecordingDecodesUpToItsLastSecond_data() {
+        QTest::addColumn<QString>("suffix");
+        QTest::newRow("mp4") << "mp4";
+        QTest::newRow("webm") << "webm";
+        QTest::newRow("gif") << "gif";
+    }
+    void aKilledRecordingDecodesUpToItsLastSecond() {
+        QFETCH(QString, suffix);
+        constexpr int fps = 25;
+        constexpr long long killAt = 4 * fps; // four seconds of clip made
+        QTemporaryDir dir;
+        const QString out = dir.filePath("killed." + suffix);
+        QStringList args = recordArgs(out, 600.0, {"--fps", QString::number(fps), "--size", "640x360"});
+        args.removeAll("--quiet");
+        TerminalRun run(args);
+        QVERIFY2(run.started(), "particlelab-cli did not start on a pseudo-terminal");
+        const long long made = run.waitForFrame(killAt, 60000);
+        QVERIFY2(made >= killAt, qPrintable(QString("the progress line stopped at frame %1").arg(made)));
+        QVERIFY(run.kill());
+        const Probe probe = ffprobe(out);
+        qInfo("%s killed after frame %lld: %lld frames decode", qPrintable(suffix), made, probe.frames);
+        QVERIFY2(probe.errors.isEmpty(), qPrintable(probe.errors));
+        QCOMPARE(QSize(probe.width, probe.height), QSize(640, 360));
+        QVERIFY2(probe.frames >= made - 2 * fps && probe.frames <= made + fps,
+                 qPrintable(QString("%1 of %2 frames").arg(probe.frames).arg(made)));
+        if (suffix == "gif") {
+            QFile file(out);
+            QVERIFY(file.open(QIODevice::ReadOnly));
+            QVERIFY2(gifEndsAfterAWholeBlock(file.readAll()), "the GIF ends inside a frame");
+        }
     }
 
     void badOptionsAreRefusedBeforeAnythingRuns_data() {

@@ -1,7 +1,9 @@
 // Writes a clip through FFmpeg's libraries (libavformat, libavcodec, libswscale): MP4 with H.264 from
 // libx264, WebM with VP9 from libvpx-vp9, or an animated GIF with one palette for the clip. Frames go to
 // the file as they are encoded, and the container is finished on every path (finish(), the destructor),
-// so a stopped or failed recording leaves a clip that plays up to its last frame.
+// so a stopped or failed recording leaves a clip that plays up to its last frame. The container goes to
+// the file in pieces that decode on their own (an MP4 fragment or WebM cluster of a second, a GIF frame),
+// so a process killed outright leaves a clip that decodes without error up to about its last second.
 #pragma once
 
 #include "ClipFormat.h"
