@@ -39,8 +39,13 @@ double secondsSince(Clock::time_point start) {
     return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-constexpr long long kReportDefaultSteps = 1000; // as `run`
-constexpr long long kReportSamples = 400;       // rows of the report's plots over the run
+// Without --steps or a preset's run length, a report runs what a class watches in this many seconds at
+// the kind's watchable pace (its registration's watchableRate), and at least kReportFewestSteps: the state
+// its description promises "within seconds" (gas-classroom's Maxwell–Boltzmann speeds; 1000 steps, 0.175 T,
+// were too few).
+constexpr double kReportWatchedSeconds = 4.0;
+constexpr long long kReportFewestSteps = 1000;
+constexpr long long kReportSamples = 400; // rows of the report's plots over the run
 
 // Why the options cannot make a clip, in one sentence; empty when they can.
 std::string optionsRefusal(const RecordOptions& options, ui::ClipFormat& format, int& width, int& height,
@@ -271,6 +276,25 @@ int recordClip(const RecordOptions& options) {
     return kOk;
 }
 
+namespace {
+
+// The steps a class watches in kReportWatchedSeconds at the kind's watchable pace (simulated time per
+// wall second, in the kind's unit of time), at least kReportFewestSteps.
+long long watchedSteps(const Model& model) {
+    const ModelDescriptor* kind = findModel(model.kind());
+    const ParamValues params = model.params();
+    const auto dt = params.find("dt");
+    if (!kind || !(kind->watchableRate > 0) || dt == params.end() ||
+        !std::holds_alternative<double>(dt->second))
+        return kReportFewestSteps;
+    const double steps =
+        std::ceil(kReportWatchedSeconds * kind->watchableRate / std::abs(std::get<double>(dt->second)));
+    return std::max(kReportFewestSteps,
+                    static_cast<long long>(std::min(steps, static_cast<double>(kMaxSteps))));
+}
+
+} // namespace
+
 int writeReport(const ReportOptions& options) {
     StopSignals stop("particlelab-cli");
     setThreads(options.threads);
@@ -285,7 +309,7 @@ int writeReport(const ReportOptions& options) {
         return refused; // made once the experiment builds
     const double setUpSeconds = secondsSince(setUpStart);
     const long long planned = built->plannedSteps();
-    const long long steps = options.steps.value_or(planned > 0 ? planned : kReportDefaultSteps);
+    const long long steps = options.steps.value_or(planned > 0 ? planned : watchedSteps(*built));
     const std::string kind = built->kind();
     const Preset described = describedAs(options.preset);
 

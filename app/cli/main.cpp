@@ -239,7 +239,8 @@ int main(int argc, char** argv) {
         "A folder for the plots' data beside the report, one CSV per plot (made if missing)");
     reportCmd
         ->add_option("--steps", report.steps,
-                     "Steps to run first (default: the preset's run length, else 1000)")
+                     "Steps to run first (default: the preset's run length, else what a class watches in 4 s "
+                     "at the scene's watchable pace, at least 1000)")
         ->transform(wholeNumber(0, kMaxSteps));
     reportCmd->add_option("--set", report.sets,
                           "Override a parameter: key=value (repeatable), in the scene's units");

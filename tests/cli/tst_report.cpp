@@ -150,14 +150,36 @@ private slots:
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
         const QStringList files = QDir(data).entryList({"*.csv"});
         QVERIFY2(files.contains("energyPlot.csv"), qPrintable(files.join(' ')));
-        QVERIFY(files.size() >= 2); // every plot of the gas
+        // The speed distribution was missing from the report and from --data.
+        QVERIFY2(files.contains("speedHistogram.csv"), qPrintable(files.join(' ')));
+        QVERIFY(files.size() >= 3); // every plot of the gas
         for (const QString& name : files) {
             QFile csv(QDir(data).filePath(name));
             QVERIFY(csv.open(QIODevice::ReadOnly));
             const QList<QByteArray> lines = csv.readAll().split('\n');
             QCOMPARE(lines.front(), QByteArray("series,x,y"));
-            QVERIFY2(lines.size() > 100, qPrintable(name)); // the run's samples, not an empty table
+            QVERIFY2(lines.size() > 30, qPrintable(name)); // the run's samples or bins, not an empty table
+            const auto theoryRows = std::count_if(
+                lines.begin(), lines.end(), [](const QByteArray& line) { return line.contains("Maxwell"); });
+            if (name == "speedHistogram.csv") // the bars and the theory's curve beside them
+                QVERIFY2(theoryRows > 10, lines.join('\n').left(400).constData());
         }
+    }
+
+    // Without --steps a report runs what the preset promises: 1000 steps (0.175 T) of gas-classroom
+    // reported "not (yet) Maxwell–Boltzmann" for a preset that promises the curve within seconds.
+    void theDefaultRunReachesWhatThePresetPromises() {
+        QTemporaryDir dir;
+        const QString html = dir.filePath("r.html");
+        const auto r = runCli({"report", "gas-classroom", "--backend", "cpu", "--out", html});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        QFile file(html);
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        const QString text = QString::fromUtf8(file.readAll());
+        QVERIFY2(text.contains("consistent with Maxwell–Boltzmann") && !text.contains("not (yet)"),
+                 qPrintable(text.mid(text.indexOf("KS distance"), 600)));
+        QVERIFY(text.contains(">57143<")); // 4 s at the watchable 2.5 T/s, dt = 1.75e-4
+        QVERIFY(text.contains("Distribution of speed"));
     }
 
     void aDataFolderThatIsAFileIsRefused() {

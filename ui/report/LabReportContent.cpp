@@ -9,6 +9,7 @@
 #include "SimulationController.h"
 #include "catalog/ModelCatalog.h"
 #include "i18n/Translations.h"
+#include "plots/DistributionPlot.h"
 #include "plots/PlotExport.h"
 #include "plots/SeriesPlot.h"
 #include "plots/SeriesPlotSpecs.h"
@@ -127,18 +128,36 @@ QString exportLabReport(SimulationController& controller, const QString& name, c
     const Model* model = controller.model();
     if (!model) return QStringLiteral("There is no experiment to report on.");
     const QString kind = QString::fromStdString(model->kind());
-    std::vector<std::unique_ptr<SeriesPlot>> widgets;
+    std::vector<std::unique_ptr<QWidget>> widgets;
     std::vector<LabReportContent::Plot> plots;
-    for (const SeriesPlotSpec& spec : seriesPlotSpecs()) {
-        if (!spec.kinds.contains(kind)) continue;
-        auto plot = std::make_unique<SeriesPlot>(&controller, spec);
-        plot->setAttribute(Qt::WA_DontShowOnScreen); // laid out and refreshed as a shown dock, no window
+    // Laid out and refreshed as a shown dock, without a window.
+    const auto shown = [&](auto plot) {
+        plot->setAttribute(Qt::WA_DontShowOnScreen);
         plot->resize(kPlotWidgetSize);
         plot->show();
         plot->refresh();
-        plots.push_back({spec.objectName, spec.title, plot->plot()});
         widgets.push_back(std::move(plot));
+    };
+    for (const SeriesPlotSpec& spec : seriesPlotSpecs()) {
+        if (!spec.kinds.contains(kind)) continue;
+        auto plot = std::make_unique<SeriesPlot>(&controller, spec);
+        plots.push_back({spec.objectName, spec.title, plot->plot()});
+        shown(std::move(plot));
     }
+    // The distributions the kind's registration lists (its docks: "speedHistogram" shows every histogram
+    // named speed…), each with the density theory predicts, titled by what is binned.
+    if (const ModelDescriptor* descriptor = findModel(model->kind()))
+        for (const std::string& dock : descriptor->distributions) {
+            const std::string prefix = dock.substr(0, dock.rfind("Histogram"));
+            QString axis;
+            for (const NamedHistogram& histogram : model->histograms())
+                if (histogram.name.rfind(prefix, 0) == 0) axis = QString::fromStdString(histogram.axis);
+            if (axis.isEmpty()) continue; // the model has none of them now
+            const QString name = QString::fromStdString(dock);
+            auto plot = std::make_unique<DistributionPlot>(&controller, name, QString::fromStdString(prefix));
+            plots.push_back({name, QStringLiteral("Distribution of %1").arg(axis), plot->plot()});
+            shown(std::move(plot));
+        }
     if (const QString problem = writeLabReport(gatherLabReport(controller, name, description, plots), path);
         !problem.isEmpty())
         return problem;
