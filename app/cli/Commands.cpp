@@ -6,6 +6,7 @@
 
 #include "catalog/ModelCatalog.h"
 #include "common/AtomicFile.h"
+#include "common/MemoryBudget.h"
 #include "common/PresetMigration.h"
 #include "common/StopRequest.h"
 #include "common/ThreadGovernor.h"
@@ -18,6 +19,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <nlohmann/json.hpp>
 #include <omp.h>
@@ -76,6 +78,22 @@ namespace {
 // Writes what makeText returns to path; nothing is formatted when no file was asked for.
 template <class MakeText> void writeText(const std::string& path, MakeText makeText) {
     if (!path.empty()) writeFileAtomically(path, makeText());
+}
+
+// A snapshot larger than this machine can read back is kept all the same (nothing measured is lost, and
+// a machine with more memory reads it); the warning says how much memory that takes. The memory this
+// run holds is counted as free: a later `run FILE` starts without it.
+void warnIfUnreadableHere(const std::string& path) {
+    std::error_code error;
+    const auto bytes = static_cast<std::size_t>(std::filesystem::file_size(path, error));
+    const double held = residentMemoryBytes();
+    if (error || bytes <= snapshotReadBound(held)) return;
+    const double needed = static_cast<double>(bytes) * kSnapshotReadMemoryPerFileByte / kUsableMemoryShare;
+    std::cerr << "particlelab-cli: warning: the snapshot '" << path << "' holds " << byteSize(bytes)
+              << ", more than the " << byteSize(snapshotReadBound(held))
+              << " that this machine can read back once the run has ended (" << snapshotBoundReason(held)
+              << "); it is kept whole, and `run FILE` or the app continue it on a machine with "
+              << byteSize(static_cast<std::size_t>(needed)) << " of memory available\n";
 }
 
 std::string particlesCsv(const Model& model) {
@@ -318,14 +336,10 @@ int runSimulation(const RunOptions& options) {
         writeText(options.histogram, [&] { return histogramsCsv(*model); });
         writeText(options.dumpFinal, [&] { return particlesCsv(*model); });
         writeText(options.fields, [&] { return fieldsCsv(*model); });
-        writeText(options.snapshot, [&] {
-            std::string text = serializeSnapshot(takeSnapshot(*model), model->paramSpecs());
-            if (text.size() > kMaxSnapshotFileBytes) // kept whole all the same: nothing measured is lost
-                std::cerr << "particlelab-cli: warning: the snapshot '" << options.snapshot << "' holds "
-                          << byteSize(text.size()) << ", more than the " << byteSize(kMaxSnapshotFileBytes)
-                          << " that `run FILE` and the app read back; use fewer particles to continue it\n";
-            return text;
-        });
+        if (!options.snapshot.empty()) {
+            writeSnapshotFile(options.snapshot, *model);
+            warnIfUnreadableHere(options.snapshot);
+        }
     } catch (const FileError& e) {
         std::cerr << "particlelab-cli: " << e.what() << "\n";
         return kCannotWrite;

@@ -4,9 +4,13 @@
 #include "common/AtomicFile.h"
 #include "common/EmbeddedFiles.h"
 #include "common/InputLimits.h"
+#include "common/MemoryBudget.h"
 #include "common/PresetMigration.h"
+#include "common/SnapshotJson.h"
 
+#include <algorithm>
 #include <filesystem>
+#include <optional>
 #include <stdexcept>
 
 namespace pl {
@@ -89,6 +93,15 @@ Preset defaultPreset(const ModelDescriptor& descriptor) {
     return preset;
 }
 
+ParamValues fewerParticles(const ParamValues& values, double share, const std::vector<std::string>& counts) {
+    ParamValues lighter;
+    for (const std::string& key : counts)
+        if (const auto it = values.find(key); it != values.end())
+            if (const double* count = std::get_if<double>(&it->second); count && *count > 0)
+                lighter[key] = std::max(1.0, std::floor(*count * share));
+    return lighter;
+}
+
 const std::vector<BuiltinPreset>& builtinPresets() {
     static const std::vector<BuiltinPreset> list = [] {
         std::vector<BuiltinPreset> presets;
@@ -156,7 +169,8 @@ std::unique_ptr<Model> instantiate(const Snapshot& snapshot) {
 bool isSnapshotFile(const std::string& path) {
     if (experimentFile(path).empty()) return false;
     try {
-        return isSnapshotJson(readWholeFile(path, kMaxSnapshotFileBytes));
+        FileReader file(path);
+        return declaresSnapshot(file);
     } catch (const FileError&) {
         return false; // reading it as a preset then reports why
     }
@@ -171,13 +185,22 @@ std::string experimentFile(const std::string& nameOrPath) {
 OpenedExperiment openExperiment(const std::string& nameOrPath) {
     const std::string path = experimentFile(nameOrPath);
     if (path.empty()) return {{loadPreset(nameOrPath), {}}, false}; // a built-in one, or why there is none
-    const std::string text = readExperimentText(path, kMaxSnapshotFileBytes, "a preset or snapshot file");
-    if (isSnapshotJson(text)) return {parseSnapshot(text, specsForModel, path), true};
-    if (text.size() > kMaxPresetFileBytes)
-        throw PresetError("", "will not read '" + path + "': it holds " + byteSize(text.size()) +
+    std::size_t size = 0;
+    try {
+        FileReader file(path);
+        size = file.size();
+        if (size > std::max(snapshotReadBound(), kMaxPresetFileBytes))
+            throw PresetError("", snapshotSizeRefusal(path, size)); // at once, from its size
+        if (std::optional<Snapshot> snapshot = readSnapshotJson(file, specsForModel, true))
+            return {std::move(*snapshot), true};
+    } catch (const FileError& e) {
+        throw PresetError("", e.what());
+    }
+    if (size > kMaxPresetFileBytes) // no snapshot, and too large for a preset
+        throw PresetError("", "will not read '" + path + "': it holds " + byteSize(size) +
                                   ", more than the " + byteSize(kMaxPresetFileBytes) +
                                   " that a preset file may hold");
-    return {{parsePreset(text, specsForModel, path), {}}, false};
+    return {{readPresetFile(path, specsForModel), {}}, false};
 }
 
 } // namespace pl

@@ -59,8 +59,9 @@ std::unique_ptr<Model> instantiate(const Preset& preset);
 // taken. Throws PresetError.
 std::unique_ptr<Model> instantiate(const Snapshot& snapshot);
 
-// Whether the file at path is a snapshot (else it is read as a preset). False for a built-in name, and
-// for what is not a regular file or is too large to be read (reading it as a preset then says why).
+// Whether the file at path is a snapshot (else it is read as a preset): read only as far as its top-level
+// "snapshot_schema". False for a built-in name, and for what is not a regular file (reading it as a
+// preset then says why).
 bool isSnapshotFile(const std::string& path);
 
 // The file that `run NAME` and the app's Open read for nameOrPath; empty for a built-in preset's name
@@ -68,9 +69,11 @@ bool isSnapshotFile(const std::string& path);
 std::string experimentFile(const std::string& nameOrPath);
 
 // An experiment as the CLI and the app open it: a built-in preset, a preset file or a snapshot file, each
-// file read once, bounded (InputLimits.h: a regular file, at most kMaxPresetFileBytes for a preset and
-// kMaxSnapshotFileBytes for a snapshot, JSON at most kMaxJsonDepth deep). isSnapshot says the state is
-// the snapshot's, to continue from. Throws PresetError with a sentence naming the file.
+// bounded (InputLimits.h: a regular file, at most kMaxPresetFileBytes for a preset and snapshotReadBound()
+// for a snapshot, the memory this machine can give its reader; JSON at most kMaxJsonDepth deep). A
+// snapshot is parsed as it streams in, in one pass that also tells it from a preset; a preset is then
+// read again whole. isSnapshot says the state is the snapshot's, to continue from. Throws PresetError
+// with a sentence naming the file.
 struct OpenedExperiment {
     Snapshot snapshot; // the preset and, when isSnapshot, its saved state
     bool isSnapshot = false;

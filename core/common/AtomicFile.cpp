@@ -187,27 +187,40 @@ void checkOutputPath(const std::string& path) {
     ::unlink(temp.c_str());
 }
 
-void writeFileAtomically(const std::string& path, std::string_view content) {
+void writePiecesAtomically(const std::string& path, const std::function<void(const PieceSink&)>& produce) {
     const std::string target = outputTarget(path);
     removeStaleTemps(target);
     struct stat existing {};
     const bool replaces = ::stat(target.c_str(), &existing) == 0;
     std::string temp;
     const int fd = createTemp(path, target, temp);
+    bool removed = false;
     auto fail = [&](const std::string& what) {
         const std::string reason = systemReason();
         ::close(fd);
         ::unlink(temp.c_str());
+        removed = true;
         throw FileError(what + " '" + path + "': " + reason);
     };
-    std::size_t written = 0;
-    while (written < content.size()) {
-        const ssize_t n = ::write(fd, content.data() + written, content.size() - written);
-        if (n < 0) {
-            if (errno == EINTR) continue;
-            fail("cannot write");
+    const PieceSink write = [&](std::string_view piece) {
+        std::size_t written = 0;
+        while (written < piece.size()) {
+            const ssize_t n = ::write(fd, piece.data() + written, piece.size() - written);
+            if (n < 0) {
+                if (errno == EINTR) continue;
+                fail("cannot write");
+            }
+            written += static_cast<std::size_t>(n);
         }
-        written += static_cast<std::size_t>(n);
+    };
+    try {
+        produce(write);
+    } catch (...) { // out of memory while formatting, say: no half-written file stays behind
+        if (!removed) {
+            ::close(fd);
+            ::unlink(temp.c_str());
+        }
+        throw;
     }
     // mkstemp creates 0600: the file keeps the permissions of the one it replaces, or gets the usual.
     mode_t mode = existing.st_mode & 07777;
@@ -222,38 +235,54 @@ void writeFileAtomically(const std::string& path, std::string_view content) {
     syncFolder(folderOf(target));
 }
 
-std::string readWholeFile(const std::string& path, std::size_t maxBytes, const std::string& what) {
+void writeFileAtomically(const std::string& path, std::string_view content) {
+    writePiecesAtomically(path, [&](const PieceSink& write) { write(content); });
+}
+
+FileReader::FileReader(const std::string& path) : path_(path) {
     // O_NONBLOCK: a FIFO opens at once instead of waiting for a writer, and is refused below.
-    const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
-    if (fd < 0) throw FileError("cannot open '" + path + "': " + systemReason());
-    const auto refuse = [&](const std::string& why) {
-        ::close(fd);
-        throw FileError(why);
-    };
-    const auto tooLarge = [&](std::size_t size) {
-        refuse("will not read '" + path + "': it holds " + byteSize(size) + ", more than the " +
-               byteSize(maxBytes) + " that " + what + " may hold");
-    };
+    fd_ = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+    if (fd_ < 0) throw FileError("cannot open '" + path + "': " + systemReason());
     struct stat st {};
-    if (::fstat(fd, &st) != 0) refuse("cannot read '" + path + "': " + systemReason());
-    if (!S_ISREG(st.st_mode))
-        refuse("will not read '" + path + "': it is " + kindOf(st.st_mode) +
-               ", and only regular files are read");
-    if (static_cast<std::size_t>(st.st_size) > maxBytes) tooLarge(static_cast<std::size_t>(st.st_size));
-    std::string text;
-    text.reserve(static_cast<std::size_t>(st.st_size));
-    char buffer[1 << 16];
+    std::string why;
+    if (::fstat(fd_, &st) != 0)
+        why = "cannot read '" + path + "': " + systemReason();
+    else if (!S_ISREG(st.st_mode))
+        why =
+            "will not read '" + path + "': it is " + kindOf(st.st_mode) + ", and only regular files are read";
+    if (!why.empty()) {
+        ::close(fd_);
+        throw FileError(why);
+    }
+    size_ = static_cast<std::size_t>(st.st_size);
+}
+
+FileReader::~FileReader() {
+    ::close(fd_);
+}
+
+std::size_t FileReader::read(char* buffer, std::size_t n) {
     for (;;) {
-        const ssize_t n = ::read(fd, buffer, sizeof buffer);
-        if (n == 0) break;
-        if (n < 0) {
-            if (errno == EINTR) continue;
-            refuse("cannot read '" + path + "': " + systemReason());
-        }
-        text.append(buffer, static_cast<std::size_t>(n));
+        const ssize_t got = ::read(fd_, buffer, n);
+        if (got >= 0) return static_cast<std::size_t>(got);
+        if (errno != EINTR) throw FileError("cannot read '" + path_ + "': " + systemReason());
+    }
+}
+
+std::string readWholeFile(const std::string& path, std::size_t maxBytes, const std::string& what) {
+    FileReader file(path);
+    const auto tooLarge = [&](std::size_t size) {
+        throw FileError("will not read '" + path + "': it holds " + byteSize(size) + ", more than the " +
+                        byteSize(maxBytes) + " that " + what + " may hold");
+    };
+    if (file.size() > maxBytes) tooLarge(file.size());
+    std::string text;
+    text.reserve(file.size());
+    char buffer[1 << 16];
+    while (const std::size_t n = file.read(buffer, sizeof buffer)) {
+        text.append(buffer, n);
         if (text.size() > maxBytes) tooLarge(text.size()); // it grew since fstat, or says no size (/proc)
     }
-    ::close(fd);
     return text;
 }
 

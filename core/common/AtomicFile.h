@@ -5,6 +5,7 @@
 #include "InputLimits.h"
 
 #include <cstddef>
+#include <functional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -39,13 +40,38 @@ bool sameFile(const std::string& a, const std::string& b);
 // same path whose process is gone are removed first, whatever their age. Throws FileError naming the
 // path and the system's reason; the old file stays intact on failure.
 void writeFileAtomically(const std::string& path, std::string_view content);
+// The same for content made piece by piece, so it is never held whole: produce calls its argument once
+// for each piece, in order. Whatever produce throws removes the temporary file and passes on.
+using PieceSink = std::function<void(std::string_view)>;
+void writePiecesAtomically(const std::string& path, const std::function<void(const PieceSink&)>& produce);
 
 // Reads a whole regular file of at most maxBytes [bytes]. Throws FileError naming the path and why: the
 // system's reason, or at once, before a byte is read, for what is not a regular file (a FIFO, a device, a
 // directory: nothing blocks) and for a file larger than maxBytes ("… more than the 16 MiB that a preset
 // file may hold"; what names the kind of file).
-std::string readWholeFile(const std::string& path, std::size_t maxBytes = kMaxSnapshotFileBytes,
-                          const std::string& what = "a preset or snapshot file");
+std::string readWholeFile(const std::string& path, std::size_t maxBytes = kMaxPresetFileBytes,
+                          const std::string& what = "a preset file");
+
+// A regular file read piece by piece (a snapshot, parsed as it streams in): opening refuses at once what
+// readWholeFile refuses before a byte is read (what is not a regular file: nothing blocks). Throws
+// FileError naming the path and why.
+class FileReader {
+public:
+    explicit FileReader(const std::string& path);
+    ~FileReader();
+    FileReader(const FileReader&) = delete;
+    FileReader& operator=(const FileReader&) = delete;
+
+    const std::string& path() const { return path_; }
+    std::size_t size() const { return size_; } // [bytes] when it was opened
+    // Up to n bytes into buffer; 0 at the end of the file.
+    std::size_t read(char* buffer, std::size_t n);
+
+private:
+    std::string path_;
+    int fd_ = -1;
+    std::size_t size_ = 0;
+};
 
 // A file written piece by piece where each piece reaches the operating system at once (no buffer in the
 // process), so a killed or interrupted process leaves every piece it wrote: the CLI's time series,

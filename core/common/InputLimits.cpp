@@ -42,14 +42,16 @@ void checkJsonDepth(std::string_view text, const std::string& source) {
         if (c == '"') {
             inString = true;
         } else if (c == '[' || c == '{') {
-            if (++depth > kMaxJsonDepth)
-                throw PresetError("", source + ": the JSON nests arrays and objects more than " +
-                                          std::to_string(kMaxJsonDepth) + " levels deep (line " +
-                                          std::to_string(line) + "); a preset or snapshot needs at most 4");
+            if (++depth > kMaxJsonDepth) throw PresetError("", jsonDepthRefusal(source, line));
         } else if ((c == ']' || c == '}') && depth > 0) {
             --depth; // unbalanced brackets are the parser's to report
         }
     }
+}
+
+std::string jsonDepthRefusal(const std::string& source, long long line) {
+    return source + ": the JSON nests arrays and objects more than " + std::to_string(kMaxJsonDepth) +
+           " levels deep (line " + std::to_string(line) + "); a preset or snapshot needs at most 4";
 }
 
 std::string readExperimentText(const std::string& path, std::size_t maxBytes, const std::string& what) {

@@ -11,9 +11,8 @@ namespace pl {
 
 // [bytes] the largest preset file read: the biggest built-in preset is under 4 KiB.
 constexpr std::size_t kMaxPresetFileBytes = std::size_t{16} << 20; // 16 MiB
-// [bytes] the largest snapshot file read: about 1.7 M disks of the gas (160 bytes each) or 2.6 M molecules
-// of the tunnel (100 bytes each). `run --snapshot` writes a larger one all the same, with a warning.
-constexpr std::size_t kMaxSnapshotFileBytes = std::size_t{256} << 20; // 256 MiB
+// A snapshot has no fixed bound: it may be as large as the memory this machine can give its reader
+// (snapshotReadBound(), MemoryBudget.h), the rule that lets the run that writes it start.
 // The deepest nesting of arrays and objects in a preset or snapshot: theirs is 4 at most.
 constexpr int kMaxJsonDepth = 64;
 
@@ -29,5 +28,8 @@ std::string byteSize(std::size_t bytes);
 // kMaxJsonDepth. A single pass over the characters, outside strings, without recursion: it runs before
 // the text is parsed, so no parser, copy or printer of the JSON ever recurses deeper.
 void checkJsonDepth(std::string_view text, const std::string& source);
+// The sentence of that refusal, for readers that count the depth as they stream: "source: the JSON nests
+// … (line 12); …".
+std::string jsonDepthRefusal(const std::string& source, long long line);
 
 } // namespace pl

@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstdio>
 #include <fstream>
 #include <limits>
 #include <sstream>
@@ -64,6 +66,31 @@ void requireMemory(const MemoryNeed& need) {
     throw ParamError(need.key, "{" + need.key + "} lets the run hold about " + bytes(need.bytes) +
                                    " of memory, more than the " + bytes(usable) +
                                    " this machine can give it now; " + need.fix(usable));
+}
+
+namespace {
+double usableForSnapshots(double freedBytes) {
+    return kUsableMemoryShare * std::max(0.0, availableMemoryBytes() + freedBytes);
+}
+} // namespace
+
+std::size_t snapshotReadBound(double freedBytes) {
+    const double bound = usableForSnapshots(freedBytes) / kSnapshotReadMemoryPerFileByte;
+    return bound >= static_cast<double>(SIZE_MAX) ? SIZE_MAX : static_cast<std::size_t>(bound);
+}
+
+std::string snapshotBoundReason(double freedBytes) {
+    char share[32];
+    std::snprintf(share, sizeof share, "%.2g", kSnapshotReadMemoryPerFileByte);
+    return std::string("reading a snapshot holds about ") + share +
+           " bytes of memory per byte of file, and this machine can give " +
+           byteSize(static_cast<std::size_t>(usableForSnapshots(freedBytes))) + " now, " +
+           std::to_string(static_cast<int>(kUsableMemoryShare * 100)) + " % of what is available";
+}
+
+double residentMemoryBytes() {
+    const double resident = procKilobytes("/proc/self/status", "VmRSS");
+    return std::isnan(resident) ? 0.0 : resident;
 }
 
 } // namespace pl

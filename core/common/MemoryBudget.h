@@ -4,6 +4,7 @@
 // overcommit, in the kernel's out-of-memory killer). docs/architecture.md, "Bounds before the run".
 #pragma once
 
+#include <cstddef>
 #include <functional>
 #include <string>
 
@@ -37,5 +38,23 @@ public:
 // the plots and the outputs.
 void requireMemory(const MemoryNeed& need);
 constexpr double kUsableMemoryShare = 0.8;
+
+// [B of memory per B of file] what reading a snapshot holds at its peak per byte of its file: the
+// state's numbers as doubles, 8 bytes for the 19 characters a number takes on average (the text itself
+// is never held whole). Measured: 0.41 for a tunnel of 10⁷ molecules (a 913 MiB file of 49.6 M
+// numbers, 394 MB at the peak); the rest is room for the first array's growth and for states of
+// shorter numbers. A file of many more numbers for its size (hand-made, "0,0,0…") is stopped by the
+// reader itself before its arrays hold more than the machine can give (SnapshotJson.h).
+constexpr double kSnapshotReadMemoryPerFileByte = 0.5;
+// [B] the largest snapshot file this process can read now: the usable share of availableMemoryBytes()
+// (plus freedBytes, memory the caller holds that a later reader would have) over
+// kSnapshotReadMemoryPerFileByte. The same rule that lets a run start bounds what it writes, so a file
+// written here reads back on this machine unless its memory is taken by something else.
+std::size_t snapshotReadBound(double freedBytes = 0.0);
+// Why the bound is what it is, for refusals: "reading a snapshot holds about 0.5 bytes of memory per
+// byte of file, and this machine can give 12 GiB now, 80 % of what is available".
+std::string snapshotBoundReason(double freedBytes = 0.0);
+// [B] the memory this process holds now (its resident set), or 0 where that is not known.
+double residentMemoryBytes();
 
 } // namespace pl

@@ -1,15 +1,23 @@
 // Snapshots beyond the contract every kind keeps (tst_model_contract): the gas continues bit for bit
 // across its spatial sorts and neighbour-list rebuilds, and with thermal walls drawing random numbers;
 // snapshots written before the state tables (tests/data/snapshots, one per kind) load and continue
-// exactly as the build that wrote them continued; broken snapshots are refused naming the entry.
+// exactly as the build that wrote them continued; broken snapshots are refused naming the entry; a
+// snapshot larger than the old fixed bound reads back, and one beyond the machine's memory is refused.
 #include "catalog/ModelCatalog.h"
+#include "common/AtomicFile.h"
+#include "common/MemoryBudget.h"
 #include "common/Snapshot.h"
+#include "common/SnapshotJson.h"
 
 #include <QtTest>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <functional>
+#include <random>
 #include <set>
 #include <sstream>
+#include <unistd.h>
 
 using namespace pl;
 
@@ -124,6 +132,101 @@ private slots:
         QVERIFY_THROWS_EXCEPTION(PresetError, parseSnapshot("{\"schema\": 1}", specsForModel, "x"));
         QVERIFY(isSnapshotJson(serializeSnapshot(good, model->paramSpecs())));
         QVERIFY(!isSnapshotJson(serializePreset(good.preset, model->paramSpecs())));
+    }
+
+    // A state of 14 M numbers, a 290 MB file, beyond the 256 MiB that earlier builds read at most: it is
+    // written in pieces and read back as it streams in, every number bit for bit (-0, subnormals, the
+    // extremes, whole numbers up to 2⁵³; NaN comes back as NaN). A text read back equally and a key
+    // given twice is refused by its path.
+    void largeSnapshotsReadBackBitForBit() {
+        auto model = instantiate(loadPreset("gas-classroom"));
+        Snapshot big = takeSnapshot(*model);
+        std::mt19937_64 bits(46);
+        const double special[] = {-0.0,
+                                  0.0,
+                                  std::numeric_limits<double>::denorm_min(),
+                                  -std::numeric_limits<double>::max(),
+                                  std::numeric_limits<double>::min(),
+                                  9007199254740992.0,
+                                  1e22,
+                                  123456789012345678.0,
+                                  0.1,
+                                  std::numeric_limits<double>::quiet_NaN()};
+        for (const char* key : {"big_a", "big_b"}) {
+            std::vector<double>& values = big.state.arrays[key];
+            values.resize(7'000'000);
+            for (double& v : values) {
+                const std::uint64_t word = bits();
+                std::memcpy(&v, &word, sizeof v);
+                if (!std::isfinite(v)) v = std::ldexp(static_cast<double>(word >> 11), -53);
+            }
+            std::copy(std::begin(special), std::end(special), values.begin());
+        }
+        QTemporaryDir dir;
+        const std::string path = dir.filePath("big.plsnap").toStdString();
+        writeSnapshotFile(path, *model); // a small one first: the big one replaces it atomically
+        writePiecesAtomically(
+            path, [&](const PieceSink& write) { writeSnapshotJson(big, model->paramSpecs(), write); });
+        const auto bytes = std::filesystem::file_size(path);
+        QVERIFY2(bytes > (std::size_t{256} << 20), qPrintable(QString::number(bytes)));
+        const Snapshot back = readSnapshotFile(path, specsForModel);
+        const auto same = [](double a, double b) {
+            return (std::isnan(a) && std::isnan(b)) || std::memcmp(&a, &b, sizeof a) == 0;
+        };
+        QCOMPARE(back.state.scalars.size(), big.state.scalars.size());
+        for (const auto& [key, value] : big.state.scalars)
+            QVERIFY2(same(back.state.scalars.at(key), value), key.c_str());
+        QCOMPARE(back.state.arrays.size(), big.state.arrays.size());
+        for (const auto& [key, values] : big.state.arrays) {
+            const std::vector<double>& read = back.state.arrays.at(key);
+            QCOMPARE(read.size(), values.size());
+            for (std::size_t i = 0; i < values.size(); ++i)
+                if (!same(values[i], read[i]))
+                    QFAIL(qPrintable(QString("%1[%2]: %3 read back as %4")
+                                         .arg(key.c_str())
+                                         .arg(i)
+                                         .arg(values[i], 0, 'g', 17)
+                                         .arg(read[i], 0, 'g', 17)));
+        }
+        QCOMPARE(back.preset.params, big.preset.params);
+        QVERIFY(openExperiment(path).isSnapshot);
+        QVERIFY(isSnapshotFile(path));
+
+        std::string twice = serializeSnapshot(takeSnapshot(*model), model->paramSpecs());
+        twice.replace(twice.find("\"arrays\":{"), 10, "\"arrays\":{\"vx\":[1.0],");
+        try {
+            parseSnapshot(twice, specsForModel, "twice");
+            QFAIL("a key given twice was read");
+        } catch (const PresetError& e) {
+            QCOMPARE(e.key(), std::string("state.arrays.vx"));
+        }
+    }
+
+    // Larger than this machine's memory can read: refused from its size, naming the file, its size,
+    // the bound and the memory (one GiB assumed here, so the answer is the same on every machine).
+    void snapshotsBeyondTheMemoryAreRefusedFromTheirSize() {
+        QTemporaryDir dir;
+        const std::string path = dir.filePath("huge.plsnap").toStdString();
+        {
+            std::ofstream out(path);
+            out << R"({"preset":{},"snapshot_schema":1,)";
+        }
+        QVERIFY(::truncate(path.c_str(), off_t{4} << 30) == 0); // sparse
+        const AssumedMemory oneGiB(double(std::size_t{1} << 30));
+        const QString expected = QString::fromStdString(
+            "will not read '" + path + "': it holds 4 GiB, more than the " + byteSize(snapshotReadBound()) +
+            " that this machine can read back as a snapshot now: reading a snapshot holds about");
+        for (const auto& read : std::vector<std::function<void()>>{
+                 [&] { readSnapshotFile(path, specsForModel); }, [&] { openExperiment(path); }}) {
+            try {
+                read();
+                QFAIL("a 4 GiB snapshot was read with 1 GiB of memory");
+            } catch (const PresetError& e) {
+                const QString m = e.what();
+                QVERIFY2(m.startsWith(expected) && m.contains("this machine can give 819.2 MiB now"),
+                         qPrintable(m));
+            }
+        }
     }
 };
 
