@@ -125,9 +125,20 @@ SceneTools* SimulationController::editableTools() {
 bool SimulationController::addObstacle(const Obstacle& obstacle) {
     SceneTools* tools = editableTools();
     if (!tools) return false;
+    const std::size_t before = model_->particleCount();
     tools->addObstacle(obstacle);
+    noteBodyPutDown(before);
     noteEdited();
     return true;
+}
+
+void SimulationController::noteBodyPutDown(std::size_t particlesBefore) {
+    // A body put down on the particles moves them out of its way; where a crowd leaves no room, the scene
+    // refuses those it cannot place, as spawning does, and the user is told.
+    const std::size_t now = model_->particleCount();
+    if (now < particlesBefore)
+        emit notice(tr("%n particle(s) had no room beside the new body and were removed.", "",
+                       static_cast<int>(particlesBefore - now)));
 }
 
 bool SimulationController::removeObstacle(std::size_t index) {
@@ -141,10 +152,12 @@ bool SimulationController::removeObstacle(std::size_t index) {
 bool SimulationController::steerObstacle(std::size_t index, double x, double y) {
     SceneTools* tools = editableTools();
     if (!tools || index >= tools->obstacles().size()) return false;
+    const std::size_t before = model_->particleCount();
     if (isRunning())
         tools->dragObstacle(index, x, y);
     else
         tools->placeObstacle(index, x, y);
+    noteBodyPutDown(before);
     noteEdited();
     return true;
 }

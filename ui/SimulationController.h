@@ -147,6 +147,8 @@ private:
     // The model's tools when the user may edit them now.
     SceneTools* editableTools();
     void restartSeries();
+    // After a tool put a body down: tells how many particles it left no room for (particleCount() before).
+    void noteBodyPutDown(std::size_t particlesBefore);
     bool runComplete() const; // the model's planned run length is reached
     void stepModel();         // one step, and the step watch
 

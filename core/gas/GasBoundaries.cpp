@@ -272,7 +272,7 @@ void driftBlock(const Boundaries& wallsIn, const DriftStep& stepIn, const DriftA
 gas::Boundaries GasModel::boundaries(double h) const {
     gas::Boundaries b;
     b.left = params_.left();
-    b.right = params_.right();
+    b.right = rightWall();
     b.bottom = params_.bottom();
     b.top = params_.top();
     b.pistonVelocity = params_.pistonEnabled ? pistonVelocity_ : 0.0;

@@ -33,7 +33,7 @@ void GasModel::buildInitialState() {
 }
 
 bool GasModel::insideSpace(double x, double y, double radius) const {
-    if (x < params_.left() || x > params_.right() || y < params_.bottom() || y > params_.top()) return false;
+    if (x < params_.left() || x > rightWall() || y < params_.bottom() || y > params_.top()) return false;
     for (const auto& o : obstacles_)
         if (o.contains(x, y, radius)) return false;
     return true;

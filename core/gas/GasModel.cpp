@@ -17,6 +17,7 @@ GasModel::GasModel() {
 void GasModel::paramsChanged(const GasParams& before) {
     integrator_ = params_.integrator;
     if (params_.pistonEnabled != before.pistonEnabled || params_.pistonX != before.pistonX) {
+        pistonX_ = params_.pistonX; // a position typed in puts the piston there
         pistonVelocity_ = 0.0;
         pistonDrive_.stop();
     }
@@ -34,6 +35,7 @@ void GasModel::reset() {
     lastCollisionRate_ = 0.0;
     lastSortStep_ = -1;
     spawnEvents_ = 0;
+    pistonX_ = params_.pistonX; // the box as set, whatever the piston did in the last run
     pistonVelocity_ = 0.0;
     escaped_ = false;
     wallWindow_.clear();
@@ -97,8 +99,17 @@ void GasModel::ensureForces() {
     computeForces(Contacts::Initialise, 0.0, true);
 }
 
+GasModel::Area GasModel::areaOf(const GasParams& p) const {
+    // The tools work in the box as it stands (the piston where it moved to); a preset's obstacles are
+    // checked in the box that preset builds.
+    return {p.left(), p.bottom(), &p == &params_ ? rightWall() : p.right(), p.top()};
+}
+
 void GasModel::bodiesEdited(BodyEdit edit) {
-    if (edit == BodyEdit::Added) { // forces and contact flags start afresh with the new body in the box
+    // A body put down on disks would hold them inside it until the next drift mirrored them out, deep into
+    // their neighbours: contact energy the step turns into heat after the energy reference was taken.
+    const bool moved = edit != BodyEdit::Removed && moveDisksOutOfBodies();
+    if (edit == BodyEdit::Added || moved) { // forces and contact flags start afresh with the new body
         forcesValid_ = false;
         ensureForces();
     }
@@ -129,7 +140,7 @@ void GasModel::drivePiston(int direction) {
 void GasModel::placePiston(double x) {
     if (!params_.pistonEnabled) throw std::logic_error("the piston is not enabled (piston_enabled = false)");
     pullState();
-    params_.pistonX = std::clamp(x, pistonLower(), 0.5 * params_.boxWidth);
+    pistonX_ = std::clamp(x, pistonLower(), 0.5 * params_.boxWidth);
     pistonDrive_.stop();
     pistonVelocity_ = 0.0;
     rebaseEnergy();
@@ -150,8 +161,8 @@ void GasModel::advanceBodies(double h) {
     bool settled = advanceObstacles(h);
     if (params_.pistonEnabled) {
         const bool wasMoving = pistonDrive_.moving();
-        pistonVelocity_ = pistonDrive_.advance(params_.pistonX, pistonLower(), 0.5 * params_.boxWidth,
-                                               toolSpeed(), params_.pistonSpeed * initialRmsSpeed(), h);
+        pistonVelocity_ = pistonDrive_.advance(pistonX_, pistonLower(), 0.5 * params_.boxWidth, toolSpeed(),
+                                               params_.pistonSpeed * initialRmsSpeed(), h);
         settled = settled || (wasMoving && !pistonDrive_.moving());
     }
     // The work a body did is now the system's energy, not integration drift.

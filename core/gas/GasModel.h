@@ -80,9 +80,10 @@ public:
     StateRecord saveState() const override; // GasSnapshot.cpp
     void restoreState(const StateRecord& state) override;
 
-    // SceneTools interface: the obstacles' tools are SceneModelBase's; the piston is the gas's own.
+    // SceneTools interface: the obstacles' tools are SceneModelBase's; the piston is the gas's own. Where
+    // the piston is now is state: piston_x is where a reset puts it, and the drive never writes it.
     bool hasPiston() const override { return params_.pistonEnabled; }
-    double pistonX() const override { return params_.pistonX; }
+    double pistonX() const override { return pistonX_; }
     double toolSpeed() const override;
     std::string spawnInRectangle(double x0, double y0, double x1, double y1) override;
 
@@ -116,7 +117,9 @@ protected:
     void advance(double h) override; // the integrator table's passes (GasModel.cpp)
     void afterStep() override;       // the health checks
     void paramsChanged(const GasParams& before) override;
-    Area areaOf(const GasParams& p) const override { return {p.left(), p.bottom(), p.right(), p.top()}; }
+    Area areaOf(const GasParams& p) const override;
+    // The right wall as it stands [L]: the piston where it moved, or the box's right side.
+    double rightWall() const { return params_.pistonEnabled ? pistonX_ : 0.5 * params_.boxWidth; }
     void bodiesEdited(BodyEdit edit) override;
     void energyEdited() override { rebaseEnergy(); } // a deliberate change of energy is not drift
     bool pistonMoving() const override { return pistonDrive_.moving(); }
@@ -169,6 +172,10 @@ protected:
     void rebaseEnergy();                 // after a user change: the new energy is the reference
 
     void populationChanged(); // after spawning or removing: counts, cells, forces, energy reference
+    // After a body was put down on the disks (added, or placed while time stands): each disk it covers
+    // goes to the nearest place where it overlaps no other disk beyond spawn_max_overlap, keeping its
+    // velocity; one with no such place within reach is removed. Returns true when a disk moved.
+    bool moveDisksOutOfBodies();
     bool overlapsTooMuch(double x, double y, double diameter) const;
     bool insideSpace(double x, double y, double radius) const;
     std::uint32_t nextId() { return nextId_++; }
@@ -204,6 +211,7 @@ private:
     std::int64_t forceEvaluations_ = 0;
     mutable bool energiesValid_ = false; // potential and virial belong to the current positions
     bool escaped_ = false;
+    double pistonX_ = 1.0;        // where the piston is [L]; a reset puts it at piston_x
     double pistonVelocity_ = 0.0; // over the current step [L/T]
     PistonDrive pistonDrive_;
 

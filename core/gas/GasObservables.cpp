@@ -103,7 +103,7 @@ GasObservables GasModel::summarise(const GasSums& sums) {
     for (int s = 0; s < 2; ++s)
         o.kTSpecies[s] = sums.count[s] > 0 ? sums.kinetic[s] / static_cast<double>(sums.count[s]) : kNaN;
 
-    double area = (params_.right() - params_.left()) * params_.boxHeight;
+    double area = (rightWall() - params_.left()) * params_.boxHeight;
     for (const auto& ob : obstacles_) area -= ob.grownArea(0.5 * params_.a.diameter);
     // Virial pressure (docs/gas.md#virial-pressure): P A = N kT + ½ Σ_{i<j} r_ij·f_ij.
     o.pressureIdeal = n * o.kT / area;
@@ -111,7 +111,7 @@ GasObservables GasModel::summarise(const GasSums& sums) {
 
     // Wall pressure: impulse per unit wall length per unit time over the last pressure_window.
     const double elapsed = time() - lastSampleTime_;
-    const double perimeter = 2.0 * (params_.right() - params_.left()) + 2.0 * params_.boxHeight;
+    const double perimeter = 2.0 * (rightWall() - params_.left()) + 2.0 * params_.boxHeight;
     if (elapsed != 0.0) wallWindow_.push_back({sums.impulse, elapsed, perimeter * elapsed});
     double windowTime = 0.0;
     for (const auto& w : wallWindow_) windowTime += std::abs(w.duration);

@@ -44,7 +44,7 @@ SceneView GasModel::sceneFrame() const {
     view.colours = ColourMap::Thermal;
     view.colourLabel = "speed";
     view.obstacles = obstacles_;
-    if (params_.pistonEnabled) view.pistonX = params_.pistonX;
+    if (params_.pistonEnabled) view.pistonX = pistonX_;
     return view;
 }
 

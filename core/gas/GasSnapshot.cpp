@@ -48,6 +48,7 @@ StateRecord GasModel::saveState() const {
         window.insert(window.end(), {w.impulse, w.duration, w.perimeterTime});
     r.put("wall_window", window);
     r.put("last_collision_rate", lastCollisionRate_);
+    r.put("piston_x", pistonX_);
     const NeighbourList::Contents list = neighbours_.contents();
     r.put("neighbours_valid", list.valid ? 1.0 : 0.0);
     r.put("neighbours_skin", list.skin);
@@ -94,6 +95,11 @@ void GasModel::restoreState(const StateRecord& r) {
     const double collisionRate = r.scalarOr("last_collision_rate", 0.0);
     if (collisionRate < 0)
         throw PresetError("state.last_collision_rate", "state.last_collision_rate must not be negative");
+    // Where the piston is. Snapshots of earlier builds have it in the preset's piston_x, which the
+    // moving piston overwrote then.
+    const double piston = r.scalarOr("piston_x", params_.pistonX);
+    if (params_.pistonEnabled && !(piston > params_.left() && piston <= 0.5 * params_.boxWidth))
+        throw PresetError("state.piston_x", "state.piston_x must lie inside the box");
 
     restoreClock(r);
     stateTable().restore(*this, r);
@@ -103,6 +109,7 @@ void GasModel::restoreState(const StateRecord& r) {
     for (std::size_t k = 0; k < window.size(); k += 3)
         wallWindow_.push_back({window[k], window[k + 1], window[k + 2]});
     lastCollisionRate_ = collisionRate;
+    pistonX_ = piston;
     escaped_ = false;
     obstacleDrive_.clear();
     pistonDrive_.stop();

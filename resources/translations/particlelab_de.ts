@@ -3547,6 +3547,13 @@ Wirkt nach „Zurücksetzen“.</translation>
 </context>
 <context>
     <name>pl::ui::SimulationController</name>
+    <message numerus="yes">
+        <source>%n particle(s) had no room beside the new body and were removed.</source>
+        <translation>
+            <numerusform>%n Teilchen hatte neben dem neuen Körper keinen Platz und wurde entfernt.</numerusform>
+            <numerusform>%n Teilchen hatten neben dem neuen Körper keinen Platz und wurden entfernt.</numerusform>
+        </translation>
+    </message>
     <message>
         <source>Computing on the %1 now; the experiment restarted from its parameters.</source>
         <translation>Rechnet jetzt auf der %1; das Experiment wurde mit seinen Parametern neu gestartet.</translation>

@@ -39,4 +39,14 @@
         </translation>
     </message>
 </context>
+<context>
+    <name>pl::ui::SimulationController</name>
+    <message numerus="yes">
+        <source>%n particle(s) had no room beside the new body and were removed.</source>
+        <translation>
+            <numerusform>%n particle had no room beside the new body and was removed.</numerusform>
+            <numerusform>%n particles had no room beside the new body and were removed.</numerusform>
+        </translation>
+    </message>
+</context>
 </TS>
