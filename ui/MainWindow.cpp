@@ -4,6 +4,7 @@
 
 #include "Autosave.h"
 #include "ExperimentDocument.h"
+#include "PaceAdvice.h"
 #include "ShortcutGuard.h"
 #include "SimulationController.h"
 #include "ViewportRoom.h"
@@ -69,6 +70,7 @@ MainWindow::MainWindow(QWidget* parent)
     status_ = new QLabel(this);
     status_->setObjectName("statusLine");
     statusBar()->addPermanentWidget(status_);
+    statusBar()->addWidget(new PaceAdvice(controller_, this)); // shows only while the pace falls short
     // A message that does not fit beside the status line takes the whole bar while it shows: clipped,
     // "Run complete: 500 steps." ran into the particle count and read "Run complete: 52,000 particles".
     connect(statusBar(), &QStatusBar::messageChanged, this, [this](const QString& message) {

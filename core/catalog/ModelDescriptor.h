@@ -112,7 +112,17 @@ struct ModelDescriptor {
     // steps up to it, and Heat / Cool are a rate per simulated time derived from it (docs/gas.md).
     double watchableRate = 0.0;
     PresentSpec present;
+    // A lighter experiment for a machine that cannot keep the watchable pace: the values that make each
+    // step about `share` (0 < share < 1) of its work now, by the parameters that set the particle count
+    // (the gas's and the DSMC cell's counts; the tunnel's F_N, to which the molecules are inversely
+    // proportional). nullptr: the kind has none to offer. The app offers it in the status bar and the
+    // teacher decides; the new values take effect at a reset.
+    ParamValues (*lighter)(const ParamValues& values, double share) = nullptr;
 };
+
+// lighter() for a kind whose work per step follows its particle counts: each named count × share, at
+// least 1 where it was not 0.
+ParamValues fewerParticles(const ParamValues& values, double share, const std::vector<std::string>& counts);
 
 // Colours the plot specs share, so the scenes' docks read alike.
 namespace plot_colours {

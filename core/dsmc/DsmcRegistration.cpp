@@ -46,6 +46,10 @@ const ModelDescriptor& dsmcRegistration() {
                                  {"step", "step", "", 1.0, 'f', 0}},
                     .plot = "temperaturesPlot",
                     .controls = {LessonControl::Pace}},
+        .lighter =
+            [](const ParamValues& values, double share) {
+                return fewerParticles(values, share, {"count_a", "count_b"});
+            },
     };
     return descriptor;
 }

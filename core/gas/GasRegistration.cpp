@@ -54,6 +54,10 @@ const ModelDescriptor& gasRegistration() {
                                     : p.initKT;
                             return 5.0 * kT / (p.a.mass * p.boxHeight);
                         }},
+        .lighter =
+            [](const ParamValues& values, double share) {
+                return fewerParticles(values, share, {"count_a", "count_b"});
+            },
     };
     return descriptor;
 }

@@ -44,6 +44,15 @@ const ModelDescriptor& tunnelRegistration() {
                                  {"time", "t", "µs", 1e6, 'f', 1}},
                     .plot = "speedHistogram",
                     .controls = {LessonControl::Pace, LessonControl::FieldView}},
+        // The molecules, and with them a step's work, are inversely proportional to F_N.
+        .lighter =
+            [](const ParamValues& values, double share) {
+                ParamValues lighter;
+                if (const auto fn = values.find("fn");
+                    fn != values.end() && std::holds_alternative<double>(fn->second))
+                    lighter["fn"] = std::get<double>(fn->second) / share;
+                return lighter;
+            },
     };
     return descriptor;
 }
