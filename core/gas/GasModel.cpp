@@ -134,7 +134,11 @@ void GasModel::dragPiston(double x) {
 
 void GasModel::drivePiston(int direction) {
     if (!params_.pistonEnabled) throw std::logic_error("the piston is not enabled (piston_enabled = false)");
+    const bool wasMoving = pistonDrive_.moving();
     pistonDrive_.drive(direction);
+    // Stopped by hand (Compress pressed again): the work it did is the system's energy now, as when it
+    // stops by itself (advanceBodies).
+    if (wasMoving && !pistonDrive_.moving()) rebaseEnergy();
 }
 
 void GasModel::placePiston(double x) {
