@@ -38,6 +38,8 @@ public:
         frameClock_.start();
         current_ = {};
     }
+    // Frames shown since the profile was switched on.
+    std::size_t frames() const { return frames_.size(); }
     // JSON object: per part the mean and the median over frames [ms]; "other" is the rest of a frame
     // (the window's composition and flush, waiting for the GL rasteriser and for the frame timer).
     QString report() const {

@@ -102,7 +102,7 @@ MainWindow::MainWindow(QWidget* parent)
     connect(viewportCore_, &ViewportCore::statusMessage, this, showMessage);
     connect(controller_, &SimulationController::notice, this, showMessage);
     // After the window's own modelReplaced handler, so a scene change while presenting hides its docks.
-    present_ = new PresentMode(this, controller_, viewport_);
+    present_ = new PresentMode(this, controller_, viewport_, baseFont_);
     connect(present_, &PresentMode::activeChanged, presentAction_, [this](bool on) {
         const QSignalBlocker block(presentAction_);
         presentAction_->setChecked(on);

@@ -197,6 +197,7 @@ void MainWindow::createActions() {
     projectorAction_ =
         menuAction(viewMenu_, tr("&Projector mode"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_P),
                    tr("Large fonts and thick lines for a classroom projector"));
+    projectorAction_->setObjectName("projectorAction");
     projectorAction_->setCheckable(true);
     connect(projectorAction_, &QAction::toggled, this, &MainWindow::setProjectorMode);
     presentAction_ =

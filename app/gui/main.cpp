@@ -221,15 +221,33 @@ int main(int argc, char** argv) {
         clock.start();
         pl::ui::FrameProfile::instance().setEnabled(true);
         const long long startStep = window.controller()->model()->stepCount();
+        // A preset with a run length stops before the measurement ends: its rate is the one while it ran
+        // (the viewport's last whole second, or 0 where it ran less than one), and the line says it stopped.
+        struct Stop {
+            bool stopped = false;
+            double seconds = 0;
+            std::size_t frames = 0;
+            long long steps = 0;
+        } stop;
+        QObject::connect(
+            window.controller(), &pl::ui::SimulationController::runningChanged, &app, [&](bool running) {
+                if (running || stop.stopped) return;
+                stop = {true, clock.elapsed() / 1000.0, pl::ui::FrameProfile::instance().frames(),
+                        window.controller()->model()->stepCount()};
+            });
         QTimer::singleShot(static_cast<int>(1000 * parser.value(options.measureFps).toDouble()), &app, [&] {
-            const double seconds = clock.elapsed() / 1000.0;
+            const double seconds = stop.stopped ? stop.seconds : clock.elapsed() / 1000.0;
+            const double fps = stop.stopped ? (seconds > 0 ? static_cast<double>(stop.frames) / seconds : 0.0)
+                                            : window.viewportCore()->framesPerSecond();
+            const long long steps =
+                (stop.stopped ? stop.steps : window.controller()->model()->stepCount()) - startStep;
             const long long clipFrames = window.recorder()->frames();
             window.recorder()->stop();
             std::printf("{\"preset\": \"%s\", \"seconds\": %.2f, \"fps\": %.1f, \"steps_per_second\": %.0f, "
-                        "\"clip_frames\": %lld, \"frame_parts\": %s}\n",
-                        qPrintable(window.document()->title()), seconds,
-                        window.viewportCore()->framesPerSecond(),
-                        (window.controller()->model()->stepCount() - startStep) / seconds, clipFrames,
+                        "\"stopped\": %s, \"clip_frames\": %lld, \"frame_parts\": %s}\n",
+                        qPrintable(window.document()->title()), seconds, fps,
+                        seconds > 0 ? static_cast<double>(steps) / seconds : 0.0,
+                        stop.stopped ? "true" : "false", clipFrames,
                         qPrintable(pl::ui::FrameProfile::instance().report()));
             std::fflush(stdout);
             window.document()->setModified(false);

@@ -1,16 +1,21 @@
-// Helpers for widget tests: clean settings, an active window of the usual size, and modal message boxes
-// answered automatically and counted.
+// Helpers for widget tests: clean settings, an active window of the usual size, modal message boxes
+// answered automatically and counted, and what of a panel its window shows (present mode's board).
 #pragma once
 
+#include <QAbstractButton>
+#include <QAbstractSlider>
 #include <QAbstractSpinBox>
 #include <QApplication>
+#include <QComboBox>
 #include <QLineEdit>
 #include <QMessageBox>
 #include <QScrollArea>
+#include <QScrollBar>
 #include <QSettings>
 #include <QStandardPaths>
 #include <QTest>
 #include <QTimer>
+#include <qcustomplot.h>
 
 namespace pl::test {
 
@@ -42,6 +47,64 @@ inline void typeInto(QWidget* field, const QString& text) {
     QTest::keyClick(box, Qt::Key_A, Qt::ControlModifier);
     QTest::keyClicks(box, text);
     QTest::keyClick(box, Qt::Key_Return);
+}
+
+// The part of widget that its window shows: its rectangle clipped by every parent up to the window
+// (a scroll area's viewport, the dock, the window), in the widget's own coordinates.
+inline QRect shownPart(const QWidget* widget, const QWidget* window) {
+    QRect clip = widget->rect();
+    QPoint offset(0, 0); // widget → current ancestor
+    for (const QWidget* w = widget; w && w != window; w = w->parentWidget()) {
+        offset += w->pos();
+        const QWidget* parent = w->parentWidget();
+        if (!parent) break;
+        clip &= parent->rect().translated(-offset);
+    }
+    return clip;
+}
+
+// Every shown widget of panel that is cut off (partly hidden by a parent's edge, a scroll area's
+// included, or a button or chooser too narrow for its text), as "objectName (class) W×H".
+inline QStringList cutOffWidgets(QWidget* panel, QWidget* window) {
+    QStringList cut;
+    for (QWidget* w : panel->findChildren<QWidget*>()) {
+        if (!w->isVisibleTo(window) || w->rect().isEmpty() || qobject_cast<QScrollBar*>(w)) continue;
+        const bool narrow = (qobject_cast<QAbstractButton*>(w) || qobject_cast<QComboBox*>(w)) &&
+                            w->width() < w->minimumSizeHint().width();
+        if (shownPart(w, window) != w->rect() || narrow)
+            cut << QString("%1 (%2) %3x%4")
+                       .arg(w->objectName(), w->metaObject()->className())
+                       .arg(w->width())
+                       .arg(w->height());
+    }
+    return cut;
+}
+
+// What a teacher can use of a board without scrolling: its controls (buttons, sliders, choosers, number
+// fields) that the window shows whole, of all it has, and its drawings' heights per panel in pixels.
+struct BoardReach {
+    int controls = 0, inReach = 0;
+    QList<int> plotHeights; // per plot: its height divided by its panels (axis rects)
+    QStringList outOfReach;
+};
+inline BoardReach boardReach(QWidget* panel, QWidget* window) {
+    BoardReach reach;
+    for (QWidget* w : panel->findChildren<QWidget*>()) {
+        if (!w->isVisibleTo(window) || qobject_cast<QScrollBar*>(w)) continue;
+        if (auto* canvas = qobject_cast<QCustomPlot*>(w)) {
+            reach.plotHeights << shownPart(canvas, window).height() / std::max(1, canvas->axisRectCount());
+            continue;
+        }
+        if (!qobject_cast<QAbstractButton*>(w) && !qobject_cast<QAbstractSlider*>(w) &&
+            !qobject_cast<QComboBox*>(w) && !qobject_cast<QAbstractSpinBox*>(w))
+            continue;
+        ++reach.controls;
+        if (!w->rect().isEmpty() && shownPart(w, window) == w->rect())
+            ++reach.inReach;
+        else
+            reach.outOfReach << w->objectName();
+    }
+    return reach;
 }
 
 // While alive, accepts every QMessageBox that opens and remembers its text.

@@ -1,14 +1,20 @@
 // Layouts that fit a small screen, run on a 1024×700 X screen (CMake starts it): the first window lies
 // inside the screen's available area, every shown plot keeps a readable height per panel in normal and
 // projector mode (the docks become tabs rather than strips), no tool-bar item falls into the overflow menu,
-// and the window's size comes back on the next start, small or large. The start itself is the real program
+// present mode's board fits the screen in projector mode, and the window's size comes back on the next
+// start, small or large; --measure-fps tells a preset that stopped. The start itself is the real program
 // (particlelab --screenshot), so what is checked is what a user's first window gets.
 #include "ExperimentDocument.h"
 #include "MainWindow.h"
+#include "UiTestSupport.h"
 #include "catalog/ModelCatalog.h"
 #include "i18n/Translations.h"
+#include "present/PresentMode.h"
+#include "present/PresentPanel.h"
 
 #include <QDockWidget>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QLabel>
 #include <QProcess>
 #include <QPushButton>
@@ -18,6 +24,7 @@
 #include <QToolBar>
 #include <QToolButton>
 #include <QtTest>
+#include <numeric>
 #include <qcustomplot.h>
 
 using namespace pl;
@@ -158,6 +165,63 @@ private slots:
         QVERIFY(window.viewport()->width() >= 0.4 * window.width());
         window.setProjectorMode(false);
         window.document()->setModified(false);
+    }
+
+    // Present mode in projector mode on the whole 1024×700 screen, as a teacher starts it (Ctrl+Shift+P,
+    // then F5), in English and German: every control of each kind's board in reach without scrolling and
+    // its plot at least kReadablePlotHeight high (before: a 30 px plot, the piston's buttons off screen).
+    void presentBoardFitsInProjectorMode_data() {
+        QTest::addColumn<QString>("preset");
+        QTest::addColumn<QString>("language");
+        for (const QString& name : onePresetPerKind())
+            for (const QString language : {"en", "de"})
+                QTest::newRow(qPrintable(QString("%1 %2").arg(name, language))) << name << language;
+    }
+    void presentBoardFitsInProjectorMode() {
+        QFETCH(QString, preset);
+        QFETCH(QString, language);
+        QVERIFY(ui::installLanguage(language));
+        ui::MainWindow window;
+        QVERIFY(window.openPreset(preset));
+        showInScreen(window);
+        window.activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(&window));
+        QTest::keyClick(window.viewport(), Qt::Key_P, Qt::ControlModifier | Qt::ShiftModifier);
+        QTest::keyClick(window.viewport(), Qt::Key_F5);
+        QVERIFY(window.presentMode()->isActive());
+        window.setGeometry(QGuiApplication::primaryScreen()->geometry()); // full screen, without a WM
+        QTest::qWait(250);
+        QWidget* panel = window.presentMode()->panel();
+        const test::BoardReach reach = test::boardReach(panel, &window);
+        qInfo("%dx%d: %d of %d controls in reach, plot heights %s", window.width(), window.height(),
+              reach.inReach, reach.controls,
+              qPrintable(std::accumulate(reach.plotHeights.begin(), reach.plotHeights.end(), QString(),
+                                         [](QString a, int h) { return a + QString::number(h) + " "; })));
+        QVERIFY2(reach.inReach == reach.controls, qPrintable("out of reach: " + reach.outOfReach.join(", ")));
+        QVERIFY(!reach.plotHeights.isEmpty());
+        for (int height : reach.plotHeights)
+            QVERIFY2(height >= kReadablePlotHeight, qPrintable(QString::number(height)));
+        const QStringList cut = test::cutOffWidgets(panel, &window);
+        QVERIFY2(cut.isEmpty(), qPrintable("cut off: " + cut.join(", ")));
+        QTest::keyClick(window.viewport(), Qt::Key_Escape);
+        window.setProjectorMode(false);
+        window.document()->setModified(false);
+        ui::installLanguage("en");
+    }
+
+    // --measure-fps on a preset that stops at its run length (dsmc-write-up: 500 steps) measures while the
+    // scene ran and says that it stopped, rather than "fps": 0.0.
+    void measuringAPresetThatStops() {
+        QProcess app;
+        app.start(PARTICLELAB_GUI, {"dsmc-write-up", "--measure-fps", "3"});
+        QVERIFY(app.waitForFinished(60000));
+        QCOMPARE(app.exitCode(), 0);
+        const QByteArray out = app.readAllStandardOutput();
+        const QJsonObject line = QJsonDocument::fromJson(out.trimmed().split('\n').last()).object();
+        qInfo("%s", out.constData());
+        QVERIFY2(line.value("stopped").toBool(), out.constData());
+        QVERIFY2(line.value("fps").toDouble() > 0, out.constData());
+        QVERIFY(line.value("seconds").toDouble() < 3);
     }
 
     // A message too long to fit beside the status line takes the whole bar while it shows, in projector

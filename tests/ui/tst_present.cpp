@@ -1,7 +1,8 @@
 // Present mode and the viewport's room under a real X server: F5 and Escape enter and leave it and bring
 // back the exact layout; the viewport keeps at least half the window in present mode and never shrinks
-// in projector mode, at 1024×700, 1280×800 and 1920×1080; the readouts follow the series store; the
-// lesson's controls act on the model through real clicks; screenshots of each scene are saved.
+// in projector mode, at 1024×700, 1280×800 and 1920×1080; every board keeps its controls in reach and its
+// plot readable, in projector mode and German too; the readouts follow the series store; the lesson's
+// controls act on the model through real clicks; screenshots of each scene are saved.
 #include "ExperimentDocument.h"
 #include "MainWindow.h"
 #include "SimulationController.h"
@@ -9,6 +10,7 @@
 #include "catalog/ModelCatalog.h"
 #include "contract/BallisticKind.h"
 #include "gl/Backends.h"
+#include "i18n/Translations.h"
 #include "plots/DistributionPlot.h"
 #include "plots/SeriesPlot.h"
 #include "present/LessonControls.h"
@@ -27,8 +29,11 @@
 #include <QToolBar>
 #include <QToolButton>
 #include <QtTest>
+#include <numeric>
 
 using namespace pl;
+using test::cutOffWidgets;
+using test::shownPart;
 
 namespace {
 
@@ -76,37 +81,6 @@ void showAt(ui::MainWindow& window, QSize size) {
     QTest::qWait(50);
 }
 
-// The part of widget that its window shows: its rectangle clipped by every parent up to the window
-// (a scroll area's viewport, the dock, the window), in the widget's own coordinates.
-QRect shownPart(const QWidget* widget, const QWidget* window) {
-    QRect clip = widget->rect();
-    QPoint offset(0, 0); // widget → current ancestor
-    for (const QWidget* w = widget; w && w != window; w = w->parentWidget()) {
-        offset += w->pos();
-        const QWidget* parent = w->parentWidget();
-        if (!parent) break;
-        clip &= parent->rect().translated(-offset);
-    }
-    return clip;
-}
-
-// Every shown widget of the present panel that is cut off (partly hidden by a parent's edge, or too
-// narrow for its text), as "objectName (class)".
-QStringList cutOffWidgets(QWidget* panel, QWidget* window) {
-    QStringList cut;
-    for (QWidget* w : panel->findChildren<QWidget*>()) {
-        if (!w->isVisibleTo(window) || w->rect().isEmpty() || qobject_cast<QScrollBar*>(w)) continue;
-        const bool narrow = (qobject_cast<QAbstractButton*>(w) || qobject_cast<QComboBox*>(w)) &&
-                            w->width() < w->minimumSizeHint().width();
-        if (shownPart(w, window) != w->rect() || narrow)
-            cut << QString("%1 (%2) %3x%4")
-                       .arg(w->objectName(), w->metaObject()->className())
-                       .arg(w->width())
-                       .arg(w->height());
-    }
-    return cut;
-}
-
 template <typename T> T* presentChild(ui::MainWindow& window, const QString& name) {
     return window.presentMode()->panel()->findChild<T*>(name);
 }
@@ -125,8 +99,11 @@ private slots:
         // ui/: present mode must still give it a board.
         registerModel(test::ballisticRegistration());
     }
-    void init() { QSettings().clear(); }                 // every test starts from the default layout
-    void cleanup() { QApplication::setFont(baseFont_); } // a failed projector row leaves no large font
+    void init() { QSettings().clear(); } // every test starts from the default layout
+    void cleanup() { // a failed projector or German row leaves no large font and no German
+        QApplication::setFont(baseFont_);
+        ui::installLanguage("en");
+    }
 
     void keysEnterAndLeaveRestoringTheLayout() {
         ui::MainWindow window;
@@ -224,11 +201,25 @@ private slots:
     }
     // Every registered kind (the catalog, with the test tree's kind) and every built-in preset, at the
     // three sizes: the panel lies inside the window with nothing cut off, shows at least three readouts,
-    // and keeps Leave and Record in reach.
+    // and keeps Leave and Record in reach. Each kind's first scene also in projector mode at 1024×700 and
+    // 1280×800 and in German: every control of its board in reach without scrolling and its plot at least
+    // 150 px high (the 30 px plot and the piston's buttons below the screen's edge).
     void everySceneFitsPresentMode_data() {
         QTest::addColumn<QString>("kind");
         QTest::addColumn<QString>("preset"); // empty: the kind's default experiment
         QTest::addColumn<QSize>("size");
+        QTest::addColumn<bool>("projector");
+        QTest::addColumn<QString>("language");
+        const auto row = [](const QString& kind, const QString& preset, QSize size, bool projector,
+                            const QString& language) {
+            QTest::newRow(qPrintable(QString("%1 %2x%3%4%5")
+                                         .arg(preset.isEmpty() ? kind : preset)
+                                         .arg(size.width())
+                                         .arg(size.height())
+                                         .arg(projector ? " projector" : "")
+                                         .arg(language == "en" ? QString() : " " + language)))
+                << kind << preset << size << projector << language;
+        };
         for (const ModelDescriptor& descriptor : modelCatalog()) {
             const QString kind = QString::fromStdString(descriptor.kind);
             QStringList presets;
@@ -237,17 +228,22 @@ private slots:
             if (presets.isEmpty()) presets << QString();
             for (const QString& preset : presets)
                 for (QSize size : {QSize(1024, 700), QSize(1280, 800), QSize(1920, 1080)})
-                    QTest::newRow(qPrintable(QString("%1 %2x%3")
-                                                 .arg(preset.isEmpty() ? kind : preset)
-                                                 .arg(size.width())
-                                                 .arg(size.height())))
-                        << kind << preset << size;
+                    row(kind, preset, size, false, "en");
+            for (const QString language : {"en", "de"}) {
+                for (QSize size : {QSize(1024, 700), QSize(1280, 800)})
+                    row(kind, presets.front(), size, true, language);
+                if (language == QLatin1String("de"))
+                    row(kind, presets.front(), QSize(1024, 700), false, language);
+            }
         }
     }
     void everySceneFitsPresentMode() {
         QFETCH(QString, kind);
         QFETCH(QString, preset);
         QFETCH(QSize, size);
+        QFETCH(bool, projector);
+        QFETCH(QString, language);
+        QVERIFY(ui::installLanguage(language)); // before the window: its texts are translated once
         ui::MainWindow window;
         window.controller()->setBackend(gl::Backend::Cpu); // the layout is the same on either backend
         if (preset.isEmpty())
@@ -255,7 +251,16 @@ private slots:
         else
             QVERIFY(window.openPreset(preset));
         showAt(window, size);
-        window.presentMode()->setActive(true);
+        if (projector) { // as the teacher does it: Ctrl+Shift+P, then F5
+            window.activateWindow();
+            QVERIFY(QTest::qWaitForWindowActive(&window));
+            QTest::keyClick(window.viewport(), Qt::Key_P, Qt::ControlModifier | Qt::ShiftModifier);
+            QVERIFY(window.findChild<QAction*>("projectorAction")->isChecked());
+            QTest::keyClick(window.viewport(), Qt::Key_F5);
+            QVERIFY(window.presentMode()->isActive());
+        } else {
+            window.presentMode()->setActive(true);
+        }
         QTest::qWait(50);
         window.resize(size); // Xvfb has no window manager: "full screen" is the size the test gives
         runFrames(window, 6);
@@ -263,7 +268,16 @@ private slots:
         QCOMPARE(window.size(), size);
         ui::PresentPanel* panel = window.presentMode()->panel();
         const QStringList cut = cutOffWidgets(panel, &window);
+        const test::BoardReach reach = test::boardReach(panel, &window);
+        qInfo("board: %d of %d controls in reach, plot %s px high; panel %d px wide", reach.inReach,
+              reach.controls,
+              qPrintable(std::accumulate(reach.plotHeights.begin(), reach.plotHeights.end(), QString(),
+                                         [](QString a, int h) { return a + QString::number(h) + " "; })),
+              panel->width());
         QVERIFY2(cut.isEmpty(), qPrintable("cut off: " + cut.join(", ")));
+        QVERIFY2(reach.inReach == reach.controls, qPrintable("out of reach: " + reach.outOfReach.join(", ")));
+        QVERIFY(!reach.plotHeights.isEmpty());
+        for (int height : reach.plotHeights) QVERIFY2(height >= 150, qPrintable(QString::number(height)));
         const QStringList readouts = panel->readouts()->texts();
         QVERIFY2(readouts.size() >= 3, qPrintable(kind + " readouts: " + readouts.join("; ")));
         // The forces on a body are read where the scene has one (not 0 N/m in the shock tube).
@@ -285,12 +299,16 @@ private slots:
         QVERIFY(viewportShare(window) >= 0.5);
         QDir().mkpath(PARTICLELAB_SCREENSHOT_DIR);
         QVERIFY(
-            window.windowImage().save(QString("%1/present-board-%2-%3x%4.png")
+            window.windowImage().save(QString("%1/present-board-%2-%3x%4%5%6.png")
                                           .arg(PARTICLELAB_SCREENSHOT_DIR, preset.isEmpty() ? kind : preset)
                                           .arg(size.width())
-                                          .arg(size.height())));
+                                          .arg(size.height())
+                                          .arg(projector ? "-projector" : "")
+                                          .arg(language == "en" ? QString() : "-" + language)));
         window.presentMode()->setActive(false);
+        window.setProjectorMode(false);
         window.document()->setModified(false);
+        ui::installLanguage("en");
     }
     void gasLessonControlsActOnTheModel() {
         ui::MainWindow window;

@@ -29,10 +29,11 @@ constexpr double kPourFraction = 0.04; // side of the poured block, as a fractio
 constexpr double kCountRange = 2.0;    // the particle slider reaches twice the scene's starting N
 constexpr double kMaxPacking = 0.4;    // … but never past 40 % of the box covered by disks
 constexpr int kViewColumns = 2;        // the field buttons wrap after this many
+constexpr int kColumnGap = 10;         // px between the two columns: German buttons fill 45 % of 1024 px
 
 // Large enough to hit on a projector's touch screen, small enough that a 700 px high board holds a
 // readable plot beside four rows of controls.
-const char* kStyle = "QPushButton { padding: 7px 8px; }"
+const char* kStyle = "QPushButton { padding: 5px 8px; }"
                      "QPushButton:checked { background: #2a5aaa; color: white; }"
                      "QSlider { min-height: 36px; }"
                      "QSlider::groove:horizontal { height: 10px; background: #c8c8c8; border-radius: 5px; }"
@@ -76,7 +77,7 @@ void LessonControls::rebuild() {
     body_ = new QWidget(this);
     grid_ = new QGridLayout(body_);
     grid_->setContentsMargins(0, 0, 0, 0);
-    grid_->setHorizontalSpacing(16);
+    grid_->setHorizontalSpacing(kColumnGap);
     grid_->setColumnStretch(0, 1);
     grid_->setColumnStretch(1, 1);
     layout_->addWidget(body_);
@@ -92,6 +93,7 @@ void LessonControls::rebuild() {
         for (LessonControl control : lessonControls(*model)) addControl(control);
     message_ = new QLabel(body_);
     message_->setWordWrap(true);
+    message_->hide();
     grid_->addWidget(message_, grid_->rowCount(), 0, 1, 2);
     syncState();
 }
@@ -410,7 +412,9 @@ void LessonControls::syncState() {
 }
 
 void LessonControls::say(const QString& sentence) {
-    if (message_) message_->setText(sentence);
+    if (!message_) return;
+    message_->setText(sentence);
+    message_->setVisible(!sentence.isEmpty()); // an empty line would take a row from a short board
 }
 
 } // namespace pl::ui

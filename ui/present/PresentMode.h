@@ -6,12 +6,14 @@
 #include "viewport/ViewportCore.h"
 
 #include <QByteArray>
+#include <QFont>
 #include <QList>
 #include <QObject>
 
 class QAction;
 class QDockWidget;
 class QMainWindow;
+class QScrollArea;
 class QShortcut;
 
 namespace pl::ui {
@@ -22,8 +24,10 @@ class SimulationController;
 class PresentMode : public QObject {
     Q_OBJECT
 public:
-    // viewport: the window's central widget, which takes the keyboard focus while presenting.
-    PresentMode(QMainWindow* window, SimulationController* controller, QWidget* viewport);
+    // viewport: the window's central widget, which takes the keyboard focus while presenting; baseFont:
+    // the window's text before projector mode enlarges it (the panel's own enlargement starts from it).
+    PresentMode(QMainWindow* window, SimulationController* controller, QWidget* viewport,
+                const QFont& baseFont);
 
     bool isActive() const { return dock_ != nullptr; }
     void setActive(bool on);
@@ -40,20 +44,25 @@ signals:
     void toolRequested(ViewportTool tool); // a lesson control asks for a viewport tool
 
 protected:
-    bool eventFilter(QObject* watched, QEvent* event) override; // keeps the panel's share on resizes
+    // Keeps the panel's share on resizes; a new application font (projector mode) builds the panel anew.
+    bool eventFilter(QObject* watched, QEvent* event) override;
 
 private:
     void enter();
     void leave();
+    void makePanel(); // in the scroll area, in the font the window's text has now
     void fitPanel();
     void hideEverythingElse(); // also after a scene change, which may bring docks back
 
     QMainWindow* window_;
     SimulationController* controller_;
     QWidget* viewport_;
+    QFont baseFont_;
     QShortcut* escape_;
     QDockWidget* dock_ = nullptr;
+    QScrollArea* scroll_ = nullptr;
     PresentPanel* panel_ = nullptr;
+    bool widened_ = false; // the board needed the widest share at this window size
     struct Saved {
         QByteArray state, geometry;
         Qt::WindowStates windowState;

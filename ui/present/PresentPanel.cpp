@@ -22,19 +22,18 @@
 namespace pl::ui {
 
 namespace {
-constexpr double kPanelFontScale = 1.35;
-constexpr int kPlotMinimumHeight = 170; // readable; a taller window gives the plot the rest
-constexpr int kChooserCharacters = 12;  // the chooser may be narrower than its longest title
+constexpr int kPlotMinimumHeight = 170;  // readable; a taller window gives the plot the rest
+constexpr int kPanelMinimumHeight = 150; // per panel of a plot of several (the density error's two)
+constexpr int kChooserCharacters = 12;   // the chooser may be narrower than its longest title
 const char* kRecordStyle = "QToolButton { padding: 6px 8px; }"
                            "QToolButton:checked { background: #c0392b; color: white; font-weight: bold; }";
 } // namespace
 
-PresentPanel::PresentPanel(SimulationController* controller, QAction* record, QWidget* parent)
+PresentPanel::PresentPanel(SimulationController* controller, QAction* record, const QFont& font,
+                           QWidget* parent)
     : QWidget(parent), controller_(controller), plotBox_(new QVBoxLayout) {
     setObjectName("presentPanel");
-    QFont big = font();
-    big.setPointSizeF(font().pointSizeF() * kPanelFontScale);
-    setFont(big); // before the children exist: styled widgets keep the font they were made with
+    setFont(font); // before the children exist: styled widgets keep the font they were made with
     auto* layout = new QVBoxLayout(this);
     // Record and Leave come first, so a short window that scrolls the panel still shows them.
     auto* top = new QHBoxLayout;
@@ -116,7 +115,8 @@ void PresentPanel::showPlot(int item) {
     plot_->setObjectName("presentPlot");
     // The drawing itself keeps a readable height, whatever controls the plot has above it.
     for (QCustomPlot* canvas : plot_->findChildren<QCustomPlot*>())
-        canvas->setMinimumHeight(kPlotMinimumHeight);
+        canvas->setMinimumHeight(
+            std::max(kPlotMinimumHeight, kPanelMinimumHeight * std::max(1, canvas->axisRectCount())));
     plotBox_->addWidget(plot_);
     plot_->show();
 }

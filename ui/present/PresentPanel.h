@@ -21,8 +21,13 @@ class SimulationController;
 class PresentPanel : public QWidget {
     Q_OBJECT
 public:
+    // The panel's text against the window's usual text (projector mode's larger text is not enlarged again).
+    static constexpr double kFontScale = 1.35;
     // record: the window's Record clip action (checked while recording), shown as a button; may be null.
-    PresentPanel(SimulationController* controller, QAction* record, QWidget* parent = nullptr);
+    // font: the panel's text, set before its children exist (styled widgets keep the font they are made
+    // with).
+    PresentPanel(SimulationController* controller, QAction* record, const QFont& font,
+                 QWidget* parent = nullptr);
 
     QComboBox* plotChooser() const { return chooser_; }
     QWidget* currentPlot() const { return plot_; }

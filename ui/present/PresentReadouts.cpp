@@ -1,5 +1,6 @@
-// PresentReadouts: a two-column board of big numbers; a readout whose column the model lacks, or that
-// needs a body the scene has not, is left out; one that is not (yet) finite shows a dash rather than "nan".
+// PresentReadouts: a two-column board of big numbers, each with its name beside it; a readout whose column
+// the model lacks, or that needs a body the scene has not, is left out; one that is not (yet) finite shows a
+// dash rather than "nan".
 #include "PresentReadouts.h"
 
 #include "PresentBoard.h"
@@ -10,6 +11,7 @@
 #include <QGridLayout>
 #include <QLabel>
 #include <QLocale>
+#include <algorithm>
 #include <cmath>
 
 namespace pl::ui {
@@ -40,6 +42,7 @@ PresentReadouts::PresentReadouts(SimulationController* controller, QWidget* pare
     setObjectName("presentReadouts");
     grid_->setContentsMargins(4, 4, 4, 4);
     grid_->setHorizontalSpacing(18);
+    grid_->setSizeConstraint(QLayout::SetNoConstraint); // minimumSizeHint() is the stacked width
     connect(controller->series(), &SeriesStore::restarted, this, &PresentReadouts::rebuild);
     connect(controller->series(), &SeriesStore::appended, this, &PresentReadouts::refresh);
     rebuild();
@@ -65,13 +68,71 @@ void PresentReadouts::rebuild() {
         value->setObjectName("readout_" + spec.column);
         value->setFont(big);
         value->setTextInteractionFlags(Qt::NoTextInteraction);
-        const int row = 2 * (index / kColumns), col = index % kColumns;
-        grid_->addWidget(name, row, col);
-        grid_->addWidget(value, row + 1, col);
+        name->setWordWrap(true); // a long name wraps rather than widening the board
         shown_.push_back({spec, column, name, value});
         ++index;
     }
     refresh();
+    place(width() >= besideWidth());
+}
+
+int PresentReadouts::besideWidth() const {
+    int width = 0;
+    for (int col = 0; col < kColumns; ++col) {
+        int widest = 0;
+        for (std::size_t i = static_cast<std::size_t>(col); i < shown_.size(); i += kColumns)
+            widest = std::max(widest, shown_[i].name->minimumSizeHint().width() + grid_->horizontalSpacing() +
+                                          shown_[i].value->sizeHint().width());
+        width += widest;
+    }
+    const QMargins m = grid_->contentsMargins();
+    return width + (kColumns - 1) * grid_->horizontalSpacing() + m.left() + m.right();
+}
+
+void PresentReadouts::place(bool beside) {
+    beside_ = beside;
+    for (const Shown& s : shown_) {
+        grid_->removeWidget(s.name);
+        grid_->removeWidget(s.value);
+    }
+    for (int c = 0; c < grid_->columnCount(); ++c) grid_->setColumnStretch(c, 0);
+    // Beside: a line less per row of readouts, which leaves a 1024 × 700 board (projector mode, German)
+    // the height for its plot and controls.
+    for (std::size_t i = 0; i < shown_.size(); ++i) {
+        const int index = static_cast<int>(i);
+        const Shown& s = shown_[i];
+        s.name->setAlignment(beside ? Qt::AlignRight | Qt::AlignVCenter : Qt::AlignLeft | Qt::AlignBottom);
+        if (beside) {
+            const int row = index / kColumns, col = 2 * (index % kColumns);
+            grid_->addWidget(s.name, row, col);
+            grid_->addWidget(s.value, row, col + 1);
+            grid_->setColumnStretch(col + 1, 1);
+        } else {
+            const int row = 2 * (index / kColumns), col = index % kColumns;
+            grid_->addWidget(s.name, row, col);
+            grid_->addWidget(s.value, row + 1, col);
+        }
+    }
+}
+
+QSize PresentReadouts::minimumSizeHint() const {
+    int width = 0;
+    for (int col = 0; col < kColumns; ++col) {
+        int widest = 0;
+        for (std::size_t i = static_cast<std::size_t>(col); i < shown_.size(); i += kColumns)
+            widest = std::max(
+                {widest, shown_[i].name->minimumSizeHint().width(), shown_[i].value->sizeHint().width()});
+        width += widest;
+    }
+    const QMargins m = grid_->contentsMargins();
+    return {width + (kColumns - 1) * grid_->horizontalSpacing() + m.left() + m.right(),
+            grid_->minimumSize().height()};
+}
+
+void PresentReadouts::resizeEvent(QResizeEvent* event) {
+    QWidget::resizeEvent(event);
+    const bool beside = width() >= besideWidth();
+    if (beside != beside_) place(beside);
 }
 
 QString PresentReadouts::valueText(const ReadoutSpec& spec, int column) const {
@@ -88,6 +149,7 @@ QString PresentReadouts::valueText(const ReadoutSpec& spec, int column) const {
 
 void PresentReadouts::refresh() {
     for (const Shown& s : shown_) s.value->setText(valueText(s.spec, s.column));
+    if (beside_ && width() < besideWidth()) place(false); // a longer number no longer fits beside
 }
 
 void PresentReadouts::changeEvent(QEvent* event) {

@@ -39,13 +39,20 @@ public:
     // "name = value unit" per readout, as shown (for tests and the accessible description).
     QStringList texts() const;
 
+    // As narrow as the readouts stacked (each name above its number) can be: a wider board puts each name
+    // beside its number, a line less per row.
+    QSize minimumSizeHint() const override;
+
 protected:
-    void changeEvent(QEvent* event) override; // the numbers scale with the panel's font
+    void changeEvent(QEvent* event) override;       // the numbers scale with the panel's font
+    void resizeEvent(QResizeEvent* event) override; // beside or above, as the width allows
 
 private:
     void rebuild(); // a new table: the scene (and so the readouts) may have changed
     void refresh(); // a new row
     QString valueText(const ReadoutSpec& spec, int column) const;
+    int besideWidth() const; // the width that the names beside their numbers need
+    void place(bool beside); // puts the labels into the grid, names beside or above their numbers
 
     SimulationController* controller_;
     QGridLayout* grid_;
@@ -56,6 +63,7 @@ private:
         QLabel* value;
     };
     std::vector<Shown> shown_;
+    bool beside_ = false;
 };
 
 } // namespace pl::ui
