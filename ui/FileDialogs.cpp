@@ -1,4 +1,5 @@
-// FileDialogs: the last folder per place in QSettings ("files/experiments", "files/exports").
+// FileDialogs: the last folder per place in QSettings ("files/experiments", "files/exports"); a name saved
+// without a suffix gets the one of the chosen filter.
 #include "FileDialogs.h"
 
 #include "ExperimentDocument.h"
@@ -6,6 +7,7 @@
 #include <QDir>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QRegularExpression>
 #include <QSettings>
 #include <QStandardPaths>
 
@@ -30,6 +32,12 @@ QString defaultFolder(Place place) {
     return !documents.isEmpty() && QFileInfo(documents).isDir() ? documents : QDir::homePath();
 }
 
+// The first suffix a name filter lists: "particlelab" for "Experiments (*.particlelab)".
+QString filterSuffix(const QString& nameFilter) {
+    static const QRegularExpression pattern(QStringLiteral("\\*\\.([^\\s)*;]+)"));
+    return pattern.match(nameFilter).captured(1);
+}
+
 } // namespace
 
 QString startFolder(Place place) {
@@ -46,7 +54,19 @@ void rememberFolderOf(Place place, const QString& path, bool isFolder) {
 QString saveFileName(QWidget* parent, Place place, const QString& caption, const QString& suggestedName,
                      const QString& filter, QString* selectedFilter) {
     const QString start = QDir(startFolder(place)).filePath(QFileInfo(suggestedName).fileName());
-    const QString path = QFileDialog::getSaveFileName(parent, caption, start, filter, selectedFilter);
+    // A dialog of its own rather than getSaveFileName: its default suffix makes "my-gas" my-gas.particlelab
+    // (a file the preset menu and a file manager recognise) and asks before that name is overwritten.
+    QFileDialog dialog(parent, caption, QString(), filter);
+    dialog.setAcceptMode(QFileDialog::AcceptSave);
+    dialog.setFileMode(QFileDialog::AnyFile);
+    dialog.selectFile(start);
+    if (selectedFilter && !selectedFilter->isEmpty()) dialog.selectNameFilter(*selectedFilter);
+    dialog.setDefaultSuffix(filterSuffix(dialog.selectedNameFilter()));
+    QObject::connect(&dialog, &QFileDialog::filterSelected, &dialog,
+                     [&dialog](const QString& chosen) { dialog.setDefaultSuffix(filterSuffix(chosen)); });
+    if (dialog.exec() != QDialog::Accepted || dialog.selectedFiles().isEmpty()) return {};
+    const QString path = dialog.selectedFiles().constFirst();
+    if (selectedFilter) *selectedFilter = dialog.selectedNameFilter();
     rememberFolderOf(place, path);
     return path;
 }

@@ -2257,6 +2257,10 @@ Wirkt nach „Zurücksetzen“.</translation>
         <translation> DPI</translation>
     </message>
     <message>
+        <source>Keep the plot&apos;s proportions</source>
+        <translation>Seitenverhältnis des Plots beibehalten</translation>
+    </message>
+    <message>
         <source>Resolution recorded in the file</source>
         <translation>In der Datei vermerkte Auflösung</translation>
     </message>

@@ -2,8 +2,11 @@
 // document, PDF starts with %PDF, CSV parses back to the plotted points; bad paths and formats give errors
 // and leave no file behind. The file dialogs start in the folder used last, else the documents folder.
 #include "FileDialogs.h"
+#include "plots/ExportImageDialog.h"
 #include "plots/PlotExport.h"
 
+#include <QCheckBox>
+#include <QSpinBox>
 #include <QTemporaryDir>
 #include <QtTest>
 #include <qcustomplot.h>
@@ -156,6 +159,67 @@ private slots:
 
         QVERIFY(QDir(target).removeRecursively()); // a folder that is gone: back to the default
         QVERIFY(files::startFolder(files::Place::Exports) != QFileInfo(target).absoluteFilePath());
+    }
+
+    // A name typed without a suffix gets the chosen filter's: my-gas.particlelab, fob-snap.plsnap (they
+    // were saved as "my-gas" and "fob-snap", which the preset menu and a file manager pass over).
+    void aBareNameGetsTheFiltersSuffix_data() {
+        QTest::addColumn<QString>("typed");
+        QTest::addColumn<QString>("filter");
+        QTest::addColumn<QString>("expected");
+        QTest::newRow("preset") << "my-gas"
+                                << "Experiments (*.particlelab);;Presets (*.json)"
+                                << "my-gas.particlelab";
+        QTest::newRow("snapshot") << "fob-snap"
+                                  << "Snapshots (*.plsnap *.json)"
+                                  << "fob-snap.plsnap";
+        QTest::newRow("own suffix kept") << "class.json"
+                                         << "Snapshots (*.plsnap *.json)"
+                                         << "class.json";
+    }
+    void aBareNameGetsTheFiltersSuffix() {
+        QFETCH(QString, typed);
+        QFETCH(QString, filter);
+        QFETCH(QString, expected);
+        QSettings().clear();
+        files::rememberFolderOf(files::Place::Experiments, dir_.path(), true);
+        QTimer driver; // types the name into the dialog's file name field and presses Return, as a user
+        connect(&driver, &QTimer::timeout, this, [&] {
+            auto* dialog = qobject_cast<QFileDialog*>(QApplication::activeModalWidget());
+            if (!dialog || !QApplication::focusWidget()) return;
+            driver.stop();
+            QWidget* field = QApplication::focusWidget();
+            QTest::keyClick(field, Qt::Key_A, Qt::ControlModifier);
+            QTest::keyClicks(field, typed);
+            QTest::keyClick(field, Qt::Key_Return);
+        });
+        driver.start(50);
+        const QString path =
+            files::saveFileName(nullptr, files::Place::Experiments, "Save preset", "untitled", filter);
+        QCOMPARE(QFileInfo(path).fileName(), expected);
+        QCOMPARE(QFileInfo(path).absolutePath(), QFileInfo(dir_.path()).absoluteFilePath());
+    }
+
+    // The image size keeps the plot's proportions: a width typed alone brings the height along (1200 ×
+    // 251 from a 573 × 120 plot was a strip with its label cut); unlocked, each side is the user's.
+    void imageSizeKeepsTheProportions() {
+        ExportImageDialog dialog(QSize(600, 300), true);
+        dialog.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&dialog));
+        auto boxes = dialog.findChildren<QSpinBox*>();
+        QSpinBox* width = boxes.at(0);
+        QSpinBox* height = boxes.at(1);
+        QCOMPARE(width->value(), 600);
+        QTest::mouseClick(width, Qt::LeftButton, {}, width->rect().center());
+        QTest::keyClick(width, Qt::Key_A, Qt::ControlModifier);
+        QTest::keyClicks(width, "1200");
+        QTest::keyClick(width, Qt::Key_Tab);
+        QCOMPARE(dialog.options().size, QSize(1200, 600));
+        QTest::mouseClick(dialog.findChild<QCheckBox*>("keepProportions"), Qt::LeftButton);
+        QTest::keyClick(height, Qt::Key_A, Qt::ControlModifier);
+        QTest::keyClicks(height, "500");
+        QTest::keyClick(height, Qt::Key_Tab);
+        QCOMPARE(dialog.options().size, QSize(1200, 500));
     }
 };
 
