@@ -68,6 +68,11 @@ void GasModel::restoreState(const StateRecord& r) {
     };
     if (counted(0) != params_.a.count || counted(1) != params_.b.count)
         throw PresetError("state.species", "state.species does not hold count_a disks of A and count_b of B");
+    // A contact's energy ½ k δ² is never negative; the cache is read as it is while energies_valid says so.
+    for (std::size_t i = 0; i < n; ++i)
+        if (s.potential[i] < 0)
+            throw PresetError("state.potential", "state.potential[" + std::to_string(i) +
+                                                     "] is negative; a contact's energy never is");
     NeighbourList::Contents list;
     list.valid = r.scalar("neighbours_valid") != 0.0;
     list.skin = r.scalar("neighbours_skin");
