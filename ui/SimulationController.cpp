@@ -62,6 +62,7 @@ void SimulationController::adopt(std::unique_ptr<Model> model) {
     if (const std::string warning = model_->accuracyWarning(); !warning.empty())
         emit notice(tr("Warning: %1").arg(coreSentence(warning)));
     pending_.clear();
+    lastChange_.clear();
     applied_ = model_->params();
     // The pace belongs to the scene: a new one starts automatic and forward, whatever the last one ran at.
     automatic_ = true;
@@ -416,7 +417,11 @@ void SimulationController::advanceFrame() {
     emit frameAdvanced();
     if (auto failure = model_->failure()) {
         pause();
-        emit failed(QString::fromStdString(failure->message()));
+        const QString message = QString::fromStdString(failure->message());
+        emit failed(lastChange_.isEmpty()
+                        ? message
+                        : tr("The last change before it: %1. Set it back, or press Reset (Ctrl+R).\n\n%2")
+                              .arg(lastChange_, message));
     } else if (isRunning() && runComplete()) {
         if (framesSinceSample_ != 0) sample(); // the last step is always in the plots
         framesSinceSample_ = 0;

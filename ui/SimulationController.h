@@ -180,6 +180,9 @@ private:
     double nanosecondsPerStep_ = 0.0;
     double stepBudgetMs_ = kStepShareOfFrameMs;
     QElapsedTimer shownClock_; // between frames shown while running
+    // The parameters changed last since the state was built ("Stiffness k (to 1e+12)"): a blow-up's
+    // message names them, as the likely cause, rather than always the time step.
+    QString lastChange_;
 };
 
 } // namespace pl::ui

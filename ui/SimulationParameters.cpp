@@ -6,9 +6,19 @@
 #include "ViewChooser.h"
 #include "i18n/Translations.h"
 
+#include <QLocale>
+
 namespace pl::ui {
 
 namespace {
+
+// A value as the panel shows it: a number in the interface's language, a choice or a switch as written.
+QString shownValue(const ParamValue& value) {
+    if (const double* number = std::get_if<double>(&value)) return QLocale().toString(*number, 'g', 6);
+    if (const bool* flag = std::get_if<bool>(&value))
+        return *flag ? QStringLiteral("on") : QStringLiteral("off");
+    return QString::fromStdString(std::get<std::string>(value));
+}
 
 bool waitsForReset(const Model& model, const std::string& key) {
     const ParamSpec* spec = findSpec(model.paramSpecs(), key);
@@ -23,12 +33,29 @@ QString SimulationController::setParameters(const ParamValues& values) {
     const ParamValues inUse = model_->params();
     ParamValues checked = pending_; // the waiting values are checked together with the new ones
     for (const auto& [key, value] : values) checked[key] = value;
+    const std::string unstableBefore = model_->stabilityRefusal();
     try {
         model_->setParams(checked);
     } catch (const ParamError& e) { // in the panel's words and language: each parameter by its label
         return coreRefusal(e.message(), model_->paramSpecs());
     } catch (const std::exception& e) {
         return QString::fromStdString(e.what());
+    }
+    // A value that puts the step beyond a known stability bound (the gas's dt·ω beyond its integrator's
+    // limit) is refused before a step is taken with it, naming the values that fit; the model keeps the
+    // ones it had. A scene already beyond it can still be changed (back) without this.
+    if (const std::string unstable = model_->stabilityRefusal();
+        !unstable.empty() && unstableBefore.empty()) {
+        try {
+            model_->setParams(inUse);
+        } catch (const std::exception&) {
+        }
+        QStringList changed;
+        for (const auto& [key, value] : values)
+            if (const ParamSpec* spec = findSpec(model_->paramSpecs(), key))
+                changed << translatedLabel(*spec);
+        return tr("%1 would make every step unstable: %2")
+            .arg(changed.join(QStringLiteral(", ")), coreSentence(unstable));
     }
     ParamValues builtWith;
     for (const auto& [key, value] : checked) {
@@ -49,7 +76,14 @@ QString SimulationController::setParameters(const ParamValues& values) {
     }
     // Show (the `view` of a scene with sampled fields) chooses what is drawn, not the experiment.
     const bool viewOnly = values.size() == 1 && values.begin()->first == ViewChooser::kKey;
-    if (!viewOnly) noteEdited();
+    if (!viewOnly) {
+        noteEdited();
+        QStringList changed;
+        for (const auto& [key, value] : values)
+            if (const ParamSpec* spec = findSpec(model_->paramSpecs(), key))
+                changed << tr("%1 (to %2)").arg(translatedLabel(*spec), shownValue(value));
+        lastChange_ = changed.join(QStringLiteral(", "));
+    }
     emit parametersChanged();
     return {};
 }
@@ -86,6 +120,7 @@ void SimulationController::reset() {
         return;
     }
     pending_.clear();
+    lastChange_.clear();
     applied_ = model_->params();
     applyDirection();
     restartSeries();

@@ -3570,6 +3570,22 @@ Wirkt nach „Zurücksetzen“.</translation>
 </context>
 <context>
     <name>pl::ui::SimulationController</name>
+    <message>
+        <source>%1 would make every step unstable: %2</source>
+        <translation>%1 machte jeden Schritt instabil: %2</translation>
+    </message>
+    <message>
+        <source>%1 (to %2)</source>
+        <translation>%1 (auf %2)</translation>
+    </message>
+    <message>
+        <source>The last change before it: %1. Set it back, or press Reset (Ctrl+R).
+
+%2</source>
+        <translation>Die letzte Änderung davor: %1. Nehmen Sie sie zurück oder drücken Sie „Zurücksetzen“ (Strg+R).
+
+%2</translation>
+    </message>
     <message numerus="yes">
         <source>%n particle(s) had no room beside the new body and were removed.</source>
         <translation>
@@ -3727,8 +3743,8 @@ Wirkt nach „Zurücksetzen“.</translation>
         <translation>Noch nicht abgetastet: die Mittelung beginnt nach den Anlaufschritten</translation>
     </message>
     <message>
-        <source>The simulation stopped: its state is no longer physical. Press Reset (Ctrl+R) to start again, with a smaller time step if it happens again.</source>
-        <translation>Die Simulation ist angehalten: ihr Zustand ist nicht mehr physikalisch. „Zurücksetzen“ (Strg+R) startet neu – geschieht es wieder, mit kleinerem Zeitschritt.</translation>
+        <source>The simulation stopped: its state is no longer physical. Press Reset (Ctrl+R) to start again; its message said which change to take back.</source>
+        <translation>Die Simulation ist angehalten: ihr Zustand ist nicht mehr physikalisch. „Zurücksetzen“ (Strg+R) startet neu; ihre Meldung nannte die Änderung, die zurückzunehmen ist.</translation>
     </message>
 </context>
 </TS>

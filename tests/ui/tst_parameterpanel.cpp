@@ -107,6 +107,39 @@ private slots:
         QCOMPARE(std::get<double>(window_->controller()->model()->params().at("dt")), 0.0002);
     }
 
+    // Stiffness 1e12 was accepted without a mark and blew the run up at once, whose message then advised
+    // "a smaller time step". A change that puts dt·ω beyond the integrator's limit is marked before a step
+    // is taken with it, naming the values that fit, and the model keeps what it had.
+    void aChangeBeyondTheStabilityLimitIsMarked() {
+        const Model* model = window_->controller()->model();
+        const ParamValues before = model->params();
+        QWidget* stiffness = panel_->editor("stiffness");
+        test::typeInto(stiffness, "1e12");
+        QVERIFY(looksRed(stiffness));
+        const QString problem = panel_->problem("stiffness");
+        QVERIFY2(problem.contains("would make every step unstable") && problem.contains("use dt ≤") &&
+                     problem.contains("or stiffness ≤"),
+                 qPrintable(problem));
+        QVERIFY(window_->controller()->model()->params() == before);
+        test::typeInto(stiffness, "2e5"); // within the limit: accepted, the mark gone
+        QVERIFY2(panel_->problem("stiffness").isEmpty(), qPrintable(panel_->problem("stiffness")));
+        QCOMPARE(std::get<double>(window_->controller()->model()->params().at("stiffness")), 2e5);
+    }
+
+    // A blow-up's message names the change made last before it (here a time step for explicit Euler,
+    // which no limit refuses: it gains energy at every dt), not always the time step.
+    void aBlowUpNamesTheLastChange() {
+        test::MessageBoxAnswerer dialogs;
+        auto* controller = window_->controller();
+        QVERIFY(controller->setParameters({{"integrator", std::string("explicit-euler")}}).isEmpty());
+        test::typeInto(panel_->editor("dt"), "0.002");
+        QVERIFY(panel_->problem("dt").isEmpty());
+        controller->play();
+        QTRY_VERIFY_WITH_TIMEOUT(!dialogs.texts.isEmpty(), 30000);
+        QVERIFY2(dialogs.texts.front().contains("The last change before it: Time step (to 0.002)"),
+                 qPrintable(dialogs.texts.front()));
+    }
+
     void aNegativeDiameterIsReportedNotReverted() {
         test::MessageBoxAnswerer dialogs;
         const double before = std::get<double>(window_->controller()->model()->params().at("diameter_a"));

@@ -342,7 +342,7 @@ void ViewportCore::paintOverlay(QPainter& painter) const {
     if (const Model* model = controller_->model(); model && model->failure())
         paintNotice(painter, widget_->rect(),
                     tr("The simulation stopped: its state is no longer physical. Press Reset (Ctrl+R) to "
-                       "start again, with a smaller time step if it happens again."));
+                       "start again; its message said which change to take back."));
 }
 
 void ViewportCore::paintSteeredTarget(QPainter& painter) const {
