@@ -80,11 +80,17 @@ inline QStringList cutOffWidgets(QWidget* panel, QWidget* window) {
     return cut;
 }
 
+// The least data area (inside the axes) a board's plot keeps at 1024 × 700, in either mode: room for three
+// labelled value ticks that do not overprint and a value label not cut to its first letter (before:
+// 40–60 px in projector mode).
+inline constexpr int kReadableDataHeight = 90;
+
 // What a teacher can use of a board without scrolling: its controls (buttons, sliders, choosers, number
-// fields) that the window shows whole, of all it has, and its drawings' heights per panel in pixels.
+// fields) that the window shows whole, of all it has, and the heights in pixels of its drawings' data
+// areas (inside the axes: what is left for the curves after titles, legends, ticks and labels).
 struct BoardReach {
     int controls = 0, inReach = 0;
-    QList<int> plotHeights; // per plot: its height divided by its panels (axis rects)
+    QList<int> plotHeights; // per axis rect of every plot, the part of it the window shows
     QStringList outOfReach;
 };
 inline BoardReach boardReach(QWidget* panel, QWidget* window) {
@@ -92,7 +98,9 @@ inline BoardReach boardReach(QWidget* panel, QWidget* window) {
     for (QWidget* w : panel->findChildren<QWidget*>()) {
         if (!w->isVisibleTo(window) || qobject_cast<QScrollBar*>(w)) continue;
         if (auto* canvas = qobject_cast<QCustomPlot*>(w)) {
-            reach.plotHeights << shownPart(canvas, window).height() / std::max(1, canvas->axisRectCount());
+            const QRect shown = shownPart(canvas, window);
+            for (QCPAxisRect* rect : canvas->axisRects())
+                reach.plotHeights << rect->rect().intersected(shown).height();
             continue;
         }
         if (!qobject_cast<QAbstractButton*>(w) && !qobject_cast<QAbstractSlider*>(w) &&

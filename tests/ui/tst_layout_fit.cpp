@@ -169,7 +169,8 @@ private slots:
 
     // Present mode in projector mode on the whole 1024×700 screen, as a teacher starts it (Ctrl+Shift+P,
     // then F5), in English and German: every control of each kind's board in reach without scrolling and
-    // its plot at least kReadablePlotHeight high (before: a 30 px plot, the piston's buttons off screen).
+    // its plot's data area (inside the axes) at least test::kReadableDataHeight high (before: a 30 px plot,
+    // the piston's buttons off screen; then 40–60 px inside the axes of a 150 px plot).
     void presentBoardFitsInProjectorMode_data() {
         QTest::addColumn<QString>("preset");
         QTest::addColumn<QString>("language");
@@ -200,7 +201,7 @@ private slots:
         QVERIFY2(reach.inReach == reach.controls, qPrintable("out of reach: " + reach.outOfReach.join(", ")));
         QVERIFY(!reach.plotHeights.isEmpty());
         for (int height : reach.plotHeights)
-            QVERIFY2(height >= kReadablePlotHeight, qPrintable(QString::number(height)));
+            QVERIFY2(height >= test::kReadableDataHeight, qPrintable(QString::number(height)));
         const QStringList cut = test::cutOffWidgets(panel, &window);
         QVERIFY2(cut.isEmpty(), qPrintable("cut off: " + cut.join(", ")));
         QTest::keyClick(window.viewport(), Qt::Key_Escape);

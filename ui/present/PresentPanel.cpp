@@ -25,6 +25,7 @@ namespace {
 constexpr int kPlotMinimumHeight = 170;  // readable; a taller window gives the plot the rest
 constexpr int kPanelMinimumHeight = 150; // per panel of a plot of several (the density error's two)
 constexpr int kChooserCharacters = 12;   // the chooser may be narrower than its longest title
+constexpr int kAxisGap = 2;              // px between an axis, its tick values and its label
 const char* kRecordStyle = "QToolButton { padding: 6px 8px; }"
                            "QToolButton:checked { background: #c0392b; color: white; font-weight: bold; }";
 } // namespace
@@ -113,10 +114,32 @@ void PresentPanel::showPlot(int item) {
     }
     if (!plot_) return;
     plot_->setObjectName("presentPlot");
-    // The drawing itself keeps a readable height, whatever controls the plot has above it.
-    for (QCustomPlot* canvas : plot_->findChildren<QCustomPlot*>())
+    // The plot's text is the board's divided by kFontScale (the usual size; in projector mode about 1.2×
+    // it): at the board's size the title, legend, tick values and axis labels took about 110 px of a
+    // 150 px panel on a projector at 1024 × 700, leaving the curves 40 px.
+    QFont plotFont = font();
+    plotFont.setPointSizeF(font().pointSizeF() / kFontScale);
+    plot_->setFont(plotFont);
+    // The drawing itself keeps a readable height, whatever controls the plot has above it; the gaps
+    // between title, legend, axes and their labels are pared down, each pixel going to the curves.
+    for (QCustomPlot* canvas : plot_->findChildren<QCustomPlot*>()) {
         canvas->setMinimumHeight(
             std::max(kPlotMinimumHeight, kPanelMinimumHeight * std::max(1, canvas->axisRectCount())));
+        canvas->plotLayout()->setRowSpacing(0);
+        for (QCPAxisRect* rect : canvas->axisRects()) {
+            rect->setMinimumMargins(QMargins());
+            for (QCPAxis* axis : rect->axes()) {
+                axis->setPadding(kAxisGap);
+                axis->setTickLabelPadding(kAxisGap);
+                axis->setLabelPadding(kAxisGap);
+            }
+        }
+        for (int i = 0; i < canvas->plotLayout()->elementCount(); ++i)
+            if (auto* legend = qobject_cast<QCPLegend*>(canvas->plotLayout()->elementAt(i))) {
+                legend->setMargins(QMargins(kAxisGap, 0, kAxisGap, 0));
+                legend->setRowSpacing(0);
+            }
+    }
     plotBox_->addWidget(plot_);
     plot_->show();
 }
