@@ -71,9 +71,13 @@ bool ShortcutGuard::finishEdit(QWidget* field, QKeyEvent* key) {
     forwarding_ = true;
     QCoreApplication::sendEvent(field, key);
     forwarding_ = false;
+    key->accept(); // handled here: not passed on to the field's parents
+    if (key->key() != Qt::Key_Escape && field->property(kRefusedFieldProperty).toBool()) {
+        editing_ = field; // still being edited: Escape here drops the text and its red mark
+        return true;
+    }
     editing_ = nullptr;
     if (home_) home_->setFocus(Qt::OtherFocusReason);
-    key->accept(); // handled here: not passed on to the field's parents
     return true;
 }
 

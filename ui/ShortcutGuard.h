@@ -10,6 +10,10 @@ class QWidget;
 
 namespace pl::ui {
 
+// A text field that refused what was typed (marked red, its reason beside it) carries this property as
+// true: Enter leaves it the keyboard, so Escape (or a correction) reaches it, not the viewport.
+inline constexpr char kRefusedFieldProperty[] = "pl_refused";
+
 // Installed on the application (it must see ShortcutOverride before any widget does). A text field — a
 // line edit, a spin box or an editable combo box — is being edited from the moment the user clicks into
 // its text or types a key that changes it (a character no shortcut uses, Backspace, Delete, Paste),

@@ -1,5 +1,6 @@
 // The window's keys act whatever widget has focus, except in a text field being typed into; Enter and
-// Escape there hand the keyboard back to the viewport, which has it at start and takes it on a click.
+// Escape there hand the keyboard back to the viewport, which has it at start and takes it on a click; a
+// field that refused its value on Enter keeps it until Escape clears the mark.
 // Every key goes through QTest to the widget that has focus, as the X server would deliver it.
 #include "ExperimentDocument.h"
 #include "MainWindow.h"
@@ -183,6 +184,27 @@ private slots:
         press(Qt::Key_Return);
         QCOMPARE(speed_->value(), 4);
         QCOMPARE(window_->controller()->stepsPerFrame(), 4);
+        QCOMPARE(focused(), window_->viewport());
+    }
+
+    // Issue 45: a value refused on Enter left its field red and the keyboard with the viewport, so Escape
+    // never reached the field. The refused field keeps the keyboard; Escape puts back the value in use,
+    // clears the mark and then hands the keyboard back.
+    void escapeAfterARefusedEnterClearsTheRedMark() {
+        const double before = paramOf(*window_, "dt");
+        auto* dt = qobject_cast<QAbstractSpinBox*>(window_->parameters()->editor("dt"));
+        const QString shown = dt->text();
+        clickIntoText(dt);
+        press(Qt::Key_A, Qt::ControlModifier);
+        type("10"); // beyond the time step's range
+        press(Qt::Key_Return);
+        QVERIFY(!window_->parameters()->problem("dt").isEmpty());
+        QCOMPARE(focused(), dt);
+        press(Qt::Key_Escape);
+        QVERIFY2(window_->parameters()->problem("dt").isEmpty(),
+                 qPrintable(window_->parameters()->problem("dt")));
+        QCOMPARE(dt->text(), shown);
+        QCOMPARE(paramOf(*window_, "dt"), before);
         QCOMPARE(focused(), window_->viewport());
     }
 

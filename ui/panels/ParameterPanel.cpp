@@ -4,6 +4,7 @@
 #include "ParameterPanel.h"
 
 #include "ScientificSpinBox.h"
+#include "ShortcutGuard.h"
 #include "SimulationController.h"
 #include "catalog/ModelCatalog.h"
 #include "i18n/Translations.h"
@@ -255,6 +256,7 @@ void ParameterPanel::showProblem(const std::string& key, const QString& text) {
     red.setColor(QPalette::Text, kProblemText);
     field->setPalette(red);
     field->setToolTip(text);
+    field->setProperty(kRefusedFieldProperty, true);
 }
 
 void ParameterPanel::clearProblem(const std::string& key) {
@@ -264,6 +266,7 @@ void ParameterPanel::clearProblem(const std::string& key) {
     it->second.label->clear();
     QWidget* field = editors_.at(key);
     field->setPalette(QPalette()); // inherits the panel's again
+    field->setProperty(kRefusedFieldProperty, false);
     if (const ParamSpec* spec = findSpec(controller_->model()->paramSpecs(), key))
         field->setToolTip(tooltipFor(*spec));
 }
