@@ -88,17 +88,20 @@ QStringList problemsOf(QCustomPlot* plot) {
                 if (auto* item = qobject_cast<QCPPlottableLegendItem*>(legend->item(i));
                     item && exponentOfAPlainNumber.match(item->plottable()->name()).hasMatch())
                     problems << QString("the legend writes '%1'").arg(item->plottable()->name());
-        // A value label shortened to fit gives its whole text as the tooltip where it is drawn.
+        // A value label shortened to fit (not merely put on two lines) gives its whole text as the tooltip
+        // where it is drawn.
         QCPAxis* y = rect->axis(QCPAxis::atLeft);
         const QString fullLabel = y->property("pl_fullLabel").toString();
-        if (y->label() != fullLabel) {
+        if (QString(y->label()).replace('\n', ' ') != fullLabel) {
             const QPointF onLabel(rect->left() - y->offset() - y->padding() - 0.5 * y->labelPadding() - 4,
                                   rect->center().y());
             if (ui::shortenedTextAt(plot, onLabel) != fullLabel)
                 problems << QString("the label '%1' is shortened and its tooltip is not '%2'")
                                 .arg(y->label(), fullLabel);
         }
-        const double length = QFontMetricsF(y->labelFont()).horizontalAdvance(y->label());
+        double length = 0; // of its longest line
+        for (const QString& line : y->label().split('\n'))
+            length = std::max(length, QFontMetricsF(y->labelFont()).horizontalAdvance(line));
         if (length > rect->height() + 1)
             problems << QString("the label '%1' (%2 px) is longer than its axis (%3 px)")
                             .arg(y->label())
@@ -161,6 +164,38 @@ private slots:
         window.setProjectorMode(false);
         window.document()->setModified(false);
         QVERIFY2(failures.isEmpty(), qPrintable(failures.join("\n")));
+    }
+
+    // Issue 45: on a 1024 × 700 screen the DSMC plots' value labels read "pairs per st…" and
+    // "M_2k / M_2k(…". A label too long for its axis goes on two lines before anything is cut.
+    void valueLabelsWrapRatherThanEndInAnEllipsis() {
+        ui::MainWindow window;
+        QVERIFY(window.openPreset("dsmc-bkw"));
+        window.resize(1024, 700);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        window.setProjectorMode(true);
+        runFrames(window, 6);
+        QStringList checked, cut;
+        for (const char* name : {"collisionsPlotDock", "momentsPlotDock"}) {
+            auto* dock = window.findChild<QDockWidget*>(name);
+            QVERIFY2(dock, name);
+            dock->show();
+            dock->raise();
+            runFrames(window, 3);
+            auto* series = qobject_cast<ui::SeriesPlot*>(dock->widget());
+            QVERIFY(series);
+            series->plot()->replot();
+            for (QCPAxisRect* rect : series->plot()->axisRects()) {
+                const QString shown = rect->axis(QCPAxis::atLeft)->label().replace(QChar('\n'), " | ");
+                checked << QString("%1 (%2 px)").arg(shown).arg(rect->height());
+                if (shown.contains(QChar(0x2026))) cut << shown;
+            }
+        }
+        qInfo("%s", qPrintable(checked.join("; ")));
+        window.setProjectorMode(false);
+        window.document()->setModified(false);
+        QVERIFY2(cut.isEmpty(), qPrintable(cut.join("; ")));
     }
 
     void timeSeriesAdvanceAfterTimeRunsBackwards() {

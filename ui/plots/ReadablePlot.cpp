@@ -18,6 +18,7 @@ namespace pl::ui {
 
 namespace {
 constexpr double kSmallestLabelScale = 0.75; // a label shrinks this far before it is shortened
+constexpr double kScaleAllowance = 0.95;     // of the scale that would fit a label exactly
 constexpr double kLegendRowStretch = 0.001;  // the legend row keeps its minimum height
 constexpr double kMaxLegendShare = 0.3;      // of a panel's height (legend row and axis rect)
 constexpr double kSmallestLegendScale = 0.65;
@@ -63,19 +64,38 @@ bool fitLegend(QCPLegend* legend, int width, int panelHeight) {
 // A vertical label longer than its axis runs past the rect into a title or the next panel.
 void fitValueLabel(QCPAxisRect* rect) {
     QCPAxis* axis = rect->axis(QCPAxis::atLeft);
-    if (axis->property("pl_shownLabel").toString() != axis->label() ||
-        axis->property("pl_shownFont").value<QFont>() != axis->labelFont()) { // set from outside
+    // A text or font set from outside is the new full text or base font. Each on its own: a font set
+    // from outside (projector mode) took the label shortened to fit the old font as the full text, and
+    // "pairs per step" stayed "pairs per st…" however much room the axis had later.
+    if (axis->property("pl_shownLabel").toString() != axis->label())
         axis->setProperty("pl_fullLabel", axis->label());
+    if (axis->property("pl_shownFont").value<QFont>() != axis->labelFont())
         axis->setProperty("pl_labelFont", axis->labelFont());
-    }
     const QString full = axis->property("pl_fullLabel").toString();
     const QFont base = axis->property("pl_labelFont").value<QFont>();
     if (full.isEmpty()) return;
     const double room = rect->height();
+    // A label too long for its axis even when set smaller goes on two lines, broken at the space nearest
+    // its middle ("pairs per / step"), before it is shortened ("pairs per st…" on a 1024 px screen).
+    QStringList lines{full};
+    if (QFontMetricsF(base).horizontalAdvance(full) * kSmallestLabelScale > room) {
+        qsizetype best = -1;
+        for (qsizetype at = full.indexOf(' '); at > 0; at = full.indexOf(' ', at + 1))
+            if (best < 0 || std::abs(at - full.size() / 2) < std::abs(best - full.size() / 2)) best = at;
+        if (best > 0) lines = {full.left(best), full.mid(best + 1)};
+    }
+    double length = 0;
+    for (const QString& line : lines) length = std::max(length, QFontMetricsF(base).horizontalAdvance(line));
     QFont font = base;
-    const double length = QFontMetricsF(base).horizontalAdvance(full);
-    if (length > room) font.setPointSizeF(base.pointSizeF() * std::max(kSmallestLabelScale, room / length));
-    const QString shown = QFontMetricsF(font).elidedText(full, Qt::ElideRight, room);
+    // Text does not shrink exactly with its point size (hinting): a label scaled to the last pixel came
+    // out a pixel too long and was shortened after all.
+    if (length > room)
+        font.setPointSizeF(base.pointSizeF() *
+                           std::max(kSmallestLabelScale, kScaleAllowance * room / length));
+    QStringList shownLines;
+    for (const QString& line : lines)
+        shownLines << QFontMetricsF(font).elidedText(line, Qt::ElideRight, room);
+    const QString shown = shownLines.join('\n');
     axis->setLabelFont(font);
     axis->setLabel(shown);
     axis->setProperty("pl_shownLabel", shown);
@@ -190,7 +210,7 @@ QString shortenedTextAt(QCustomPlot* plot, const QPointF& at) {
         const QString full = axis->property("pl_fullLabel").toString();
         // The value label runs up the strip left of the axis rect, beside it.
         if (at.x() < rect->left() && at.y() >= rect->top() && at.y() <= rect->bottom() &&
-            full != axis->label())
+            full != QString(axis->label()).replace('\n', ' '))
             return full;
     }
     for (int i = 0; i < plot->plotLayout()->elementCount(); ++i)
