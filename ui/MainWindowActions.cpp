@@ -30,7 +30,8 @@
 namespace pl::ui {
 
 namespace {
-constexpr double kHeatStep = 1.1; // one press of Heat / Cool: ×1.1 or ÷1.1 kinetic energy
+constexpr double kHeatStep = 1.1;   // one press of Heat / Cool: ×1.1 or ÷1.1 kinetic energy
+constexpr int kPresetListRows = 12; // the preset list's height in rows; it scrolls for the rest
 
 QAction* menuAction(QMenu* menu, const QString& text, const QKeySequence& shortcut, const QString& tip) {
     QAction* action = menu->addAction(text);
@@ -244,7 +245,13 @@ void MainWindow::createSceneBar() {
     bar->addWidget(scenePicker_);
     bar->addWidget(new QLabel(tr(" Preset "), bar));
     presetPicker_ = new QComboBox(bar);
+    presetPicker_->setObjectName("presetPicker");
     presetPicker_->setMinimumContentsLength(18);
+    // A list that drops down below the box and scrolls, not the style's list laid over it: that put the
+    // current preset on the box and the ones before it above, past the top of a 700 px screen, with
+    // nothing for the wheel to scroll.
+    presetPicker_->setStyleSheet(QStringLiteral("QComboBox { combobox-popup: 0; }"));
+    presetPicker_->setMaxVisibleItems(kPresetListRows);
     presetPicker_->setToolTip(tr("Built-in experiments and your saved presets"));
     connect(presetPicker_, &QComboBox::activated, this, [this](int index) {
         const QString target = presetPicker_->itemData(index).toString();

@@ -15,11 +15,14 @@
 #include "viewport/SoftwareViewport.h"
 #include "viewport/ViewportCore.h"
 
+#include <QAbstractItemView>
 #include <QComboBox>
 #include <QDockWidget>
+#include <QScrollBar>
 #include <QSettings>
 #include <QStandardPaths>
 #include <QTemporaryDir>
+#include <QWheelEvent>
 #include <QtTest>
 #include <qcustomplot.h>
 
@@ -451,6 +454,38 @@ private slots:
         QVERIFY(window.openPreset("gas-write-up")); // back to the gas: its docks return
         QVERIFY(!window.findChild<QDockWidget*>("energyPlotDock")->isHidden());
         QVERIFY(window.findChild<QDockWidget*>("momentsPlotDock")->isHidden());
+    }
+
+    // Issue 45: on a 700 px screen the preset list opened over its box with the presets before the current
+    // one above it, past the screen's top, and the wheel did not scroll it. Opened with a click, it lies
+    // on the screen and the wheel scrolls it.
+    void thePresetListStaysOnTheScreenAndScrolls() {
+        ui::MainWindow window;
+        QVERIFY(window.openPreset(QString::fromStdString(builtinPresets().back().name))); // the last item
+        const QRect screen = window.screen()->geometry();
+        window.setGeometry(QRect(screen.topLeft(), QSize(1024, 700)).intersected(screen));
+        QVERIFY(test::showActive(window));
+        auto* picker = window.findChild<QComboBox*>("presetPicker");
+        QVERIFY(picker);
+        QTest::mouseClick(picker, Qt::LeftButton, {}, picker->rect().center());
+        QTRY_VERIFY(picker->view()->isVisible());
+        const QRect list = picker->view()->window()->geometry();
+        QVERIFY2(screen.contains(list), qPrintable(QString("list at %1,%2 %3x%4")
+                                                       .arg(list.x())
+                                                       .arg(list.y())
+                                                       .arg(list.width())
+                                                       .arg(list.height())));
+        QScrollBar* bar = picker->view()->verticalScrollBar();
+        QVERIFY2(bar->maximum() > 0, "the list shows every preset at once: nothing to scroll");
+        const int before = bar->value();
+        QWidget* rows = picker->view()->viewport();
+        const QPointF at = rows->rect().center();
+        QWheelEvent up(at, rows->mapToGlobal(at), QPoint(), QPoint(0, 120), Qt::NoButton, Qt::NoModifier,
+                       Qt::NoScrollPhase, false);
+        QApplication::sendEvent(rows, &up);
+        QVERIFY(bar->value() < before);
+        picker->hidePopup();
+        window.document()->setModified(false);
     }
 
     void dockLayoutPersists() {
