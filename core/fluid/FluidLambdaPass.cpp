@@ -42,8 +42,17 @@ inline void finishBlock(const LambdaArrays& a, const LambdaConstants& c, BlockPa
     const Lanes inverseRest = Lanes::all(c.inverseRest), one = Lanes::all(1.0);
     const Lanes constraint = s.rho * inverseRest - one;
     pair.scatter(constraint, a.constraint);
-    pair.scatter(-constraint / ((s.gx * s.gx + s.gy * s.gy + s.sumSquares) * inverseRest * inverseRest +
-                                Lanes::all(c.epsilon)),
+    // The solve of the step's new compression (FluidModel::solveNewCompression) sees C_i − b_i. The
+    // inequality ρ_i ≤ ρ₀ (Müller et al. 2007 §3.3: a constraint projected only while violated) then leaves
+    // an under-dense particle's λ at 0: it pulls no neighbour.
+    Lanes target = constraint;
+    if (a.bias) target = target - pair.gather(a.bias);
+    if (c.compressionOnly) {
+        const double clamped[2] = {std::max(target.lane0(), 0.0), std::max(target.lane1(), 0.0)};
+        target = Lanes::gather(clamped, 0, 1);
+    }
+    pair.scatter(-target / ((s.gx * s.gx + s.gy * s.gy + s.sumSquares) * inverseRest * inverseRest +
+                            Lanes::all(c.epsilon)),
                  a.lambda);
     pair.scatter(s.gx, a.gradSumX);
     pair.scatter(s.gy, a.gradSumY);

@@ -30,12 +30,15 @@ struct LambdaArrays {
     double* gradSumY;
     double* scorrSumX;
     double* scorrSumY;
-    long long count; // particles
+    long long count;    // particles
+    const double* bias; // old compression max(C_i(x), 0) subtracted from C_i
+                        // (FluidModel::solveNewCompression), or nullptr
 };
 
 struct LambdaConstants {
     LaneKernels kernels;
     double selfWeight, inverseRest, epsilon;
+    bool compressionOnly; // λ from max(C_i, 0): the constraint ρ_i ≤ ρ₀ (FluidParams::compressionOnly)
 };
 
 // Blocks [first, last) of the pass; lambdaBlocks() picks the build the CPU runs.

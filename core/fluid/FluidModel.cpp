@@ -72,11 +72,14 @@ void FluidModel::advance(double /*h*/) { // h = dt: the fluid runs forwards only
     const auto iterations = static_cast<std::size_t>(params_.iterations);
     errorMean_.assign(iterations, 0.0);
     errorMax_.assign(iterations, 0.0);
+    const bool limited = params_.releaseLimit > 0;
+    if (limited) solveNewCompression(); // the velocity's share of the correction (FluidSolver.cpp)
     for (std::size_t k = 0; k < iterations; ++k) {
         leaveIfAbandoning();
         computeLambdas(k);
         applyPositionCorrections();
     }
+    if (limited) limitRelease();
     leaveSolverNumbers();
     updateVelocities();
     if (params_.vorticity > 0) applyVorticityConfinement();

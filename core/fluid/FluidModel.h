@@ -77,7 +77,13 @@ protected:
     // Algorithm 1, line by line.
     void applyExternalForcesAndPredict();
     void findNeighbours();
-    void computeLambdas(std::size_t iteration);
+    // The λ pass; `iteration` indexes the density-error profile (kNotProfiled: a position-only iteration);
+    // `newOnly` subtracts the old compression measured by measureOldCompression().
+    static constexpr std::size_t kNotProfiled = static_cast<std::size_t>(-1);
+    void computeLambdas(std::size_t iteration, bool newOnly = false);
+    void measureOldCompression();
+    void solveNewCompression();
+    void limitRelease();
     void applyPositionCorrections();
     void leaveSolverNumbers();
     void updateVelocities();
@@ -105,6 +111,10 @@ protected:
     std::vector<double> px_, py_;       // predicted, then corrected positions
     std::vector<double> nextX_, nextY_; // Jacobi target of a correction pass
     std::vector<double> lambda_, constraint_;
+    // The bounded release (release_limit > 0), in solver numbers: the step's starting positions and their
+    // compression max(C_i(x), 0); the prediction x*; the solve of the step's new compression, then the
+    // positions the velocity is taken from (in particle numbers after leaveSolverNumbers()).
+    std::vector<double> startX_, startY_, oldCompression_, predictedX_, predictedY_, velocityX_, velocityY_;
     std::vector<double> pairGradX_, pairGradY_; // ∇W_ij per neighbour entry, at this iteration's positions
     std::vector<double> gradSumX_, gradSumY_;   // G_i = Σ_j ∇W_ij
     std::vector<double> scorrSumX_, scorrSumY_; // S_i = Σ_j s_corr,ij ∇W_ij

@@ -121,6 +121,21 @@ const std::vector<ParamField<FluidParams>>& FluidParams::fields() {
         real(&P::xsph, makeSpec("xsph", "XSPH viscosity c", "", "Solver",
                                 "Velocity smoothing of the paper (0.01 there); 0: off, as in the write-up.",
                                 0, 1, 0.01, d.xsph, true));
+        f.push_back(bindBool(
+            &P::compressionOnly,
+            makeSpec(
+                "compression_only", "Pressure pushes only", "", "Solver",
+                "The density constraint as ρ ≤ ρ₀: compressed fluid pushes apart, under-dense fluid (the "
+                "free surface, along the walls) does not pull together. Off: the paper's equality, as in "
+                "the write-up.",
+                0, 1, 1, d.compressionOnly, true)));
+        real(&P::releaseLimit,
+             makeSpec(
+                 "release_limit", "Release of old compression", "× |g| Δt", "Solver",
+                 "Compression the solver left from earlier steps moves the particles but adds at most this "
+                 "much velocity per step, so it is not released as a launch when gravity is switched off. "
+                 "Costs a second solve. 0: off, as in the write-up.",
+                 0, 100, 0.5, d.releaseLimit, true));
         real(&P::vorticity, makeSpec("vorticity", "Vorticity confinement ε", "", "Solver",
                                      "Re-injects vorticity lost to damping; 0: off, as in the write-up.", 0,
                                      100, 0.01, d.vorticity, true));

@@ -39,7 +39,16 @@ struct FluidParams {
     long long scorrN = 4;
     double particleRadius = 0.3; // walls and obstacles keep centres this far away [L]
     double xsph = 0.0;           // XSPH viscosity c (paper: 0.01); 0: off
-    double vorticity = 0.0;      // vorticity confinement ε_vort; 0: off
+    // The density constraint as the inequality ρ_i ≤ ρ₀ (λ from max(C_i, 0)): compressed fluid pushes apart,
+    // under-dense fluid (the free surface, along the walls) does not pull together. Off: eq. 1's equality,
+    // whose λ_i > 0 at every under-dense particle pulls the fluid together (the write-up).
+    bool compressionOnly = false;
+    // Bound on the velocity that compression left from earlier steps may release, in units of |g| Δt per
+    // step (FluidSolver.cpp, limitRelease): the solver runs twice, once on the full C_i and once on the
+    // compression that arose during the step; their difference moves the positions, but adds at most
+    // release_limit |g| Δt to the velocity. Typical 2, range 0–100; 0: off (the write-up, one solve).
+    double releaseLimit = 0.0;
+    double vorticity = 0.0; // vorticity confinement ε_vort; 0: off
 
     // Particles
     double spawnSpacing = 0.8; // spawn lattice spacing / h

@@ -5,6 +5,7 @@
 #include "FluidModel.h"
 
 #include "common/Parallel.h"
+#include "common/StopRequest.h"
 
 #include <algorithm>
 #include <cmath>
@@ -62,15 +63,86 @@ void FluidModel::findNeighbours() {
 void FluidModel::leaveSolverNumbers() {
     const long long n = loopCount(state_);
     const std::uint32_t* rank = neighbours_.rank();
-    const double *px = px_.data(), *py = py_.data();
-    double *x = nextX_.data(), *y = nextY_.data();
+    const auto toParticleNumbers = [&](std::vector<double>& values) {
+        const double* from = values.data();
+        double* to = nextX_.data();
 #pragma omp parallel for schedule(static) if (n >= kParallelMinParticles)
-    for (long long i = 0; i < n; ++i) {
-        x[i] = px[rank[i]];
-        y[i] = py[rank[i]];
+        for (long long i = 0; i < n; ++i) to[i] = from[rank[i]];
+        values.swap(nextX_);
+    };
+    toParticleNumbers(px_);
+    toParticleNumbers(py_);
+    if (params_.releaseLimit > 0) {
+        toParticleNumbers(velocityX_);
+        toParticleNumbers(velocityY_);
     }
-    px_.swap(nextX_);
-    py_.swap(nextY_);
+}
+
+// The bounded release. The soft solver (ε = 1, 5 iterations) holds a pool up by compressing it: 1.35 % on
+// average in the fluid-obstacle pool at rest, 5.8 % at its floor. Unloaded (gravity switched off), that
+// compression would be released as velocity, v = (x* − x)/Δt, and the floor, which only pushes, would
+// launch the pool at the ceiling (docs/fluid.md#stored-compression). As rigid-body solvers keep the
+// correction of old position error out of the velocity (the split impulses of Bullet and Box2D), the
+// correction is split here into the share that removes the compression arising during the step (an impact,
+// the step's load), solved on C_i − b_i with b_i = max(C_i(x), 0) measured at the step's start, and the rest,
+// which removes b_i: the positions take both, the velocity the rest only up to release_limit |g| Δt per
+// step, enough to carry the load a resting pool's compression carries. The neighbour rows of x* serve for x.
+void FluidModel::measureOldCompression() {
+    const long long n = loopCount(state_);
+    startX_.resize(state_.size());
+    startY_.resize(state_.size());
+    oldCompression_.resize(state_.size());
+    const std::uint32_t* order = neighbours_.order();
+    const double *x = state_.x.data(), *y = state_.y.data();
+    double *sx = startX_.data(), *sy = startY_.data();
+#pragma omp parallel for schedule(static) if (n >= kParallelMinParticles)
+    for (long long k = 0; k < n; ++k) { // solver numbers
+        sx[k] = x[order[k]];
+        sy[k] = y[order[k]];
+    }
+    startX_.swap(px_);
+    startY_.swap(py_);
+    computeLambdas(kNotProfiled); // C_i(x) into constraint_
+    startX_.swap(px_);
+    startY_.swap(py_);
+    double* b = oldCompression_.data();
+    const double* c = constraint_.data();
+#pragma omp parallel for schedule(static) if (n >= kParallelMinParticles)
+    for (long long k = 0; k < n; ++k) b[k] = std::max(c[k], 0.0);
+}
+
+// The iterations on the step's new compression, from x*; x* is restored for the full solve.
+void FluidModel::solveNewCompression() {
+    measureOldCompression();
+    predictedX_.assign(px_.begin(), px_.end());
+    predictedY_.assign(py_.begin(), py_.end());
+    for (long long k = 0; k < params_.iterations; ++k) {
+        leaveIfAbandoning();
+        computeLambdas(kNotProfiled, true);
+        applyPositionCorrections();
+    }
+    px_.swap(predictedX_);
+    py_.swap(predictedY_);
+    velocityX_.swap(predictedX_); // the new compression's solve
+    velocityY_.swap(predictedY_);
+}
+
+// x_v = x_new + (x_full − x_new) shortened to at most release_limit |g| Δt²: the positions the velocity
+// update reads; the full solve's x* stays the position.
+void FluidModel::limitRelease() {
+    const long long n = loopCount(state_);
+    const double limit = params_.releaseLimit * std::hypot(params_.accelerationX(), params_.accelerationY()) *
+                         params_.dt * params_.dt; // [L]
+    const double *px = px_.data(), *py = py_.data();
+    double *vx = velocityX_.data(), *vy = velocityY_.data();
+#pragma omp parallel for schedule(static) if (n >= kParallelMinParticles)
+    for (long long k = 0; k < n; ++k) {
+        const double ox = px[k] - vx[k], oy = py[k] - vy[k];
+        const double length = std::sqrt(ox * ox + oy * oy);
+        const double scale = length > limit ? limit / length : 1.0;
+        vx[k] += ox * scale;
+        vy[k] += oy * scale;
+    }
 }
 
 // Lines 9–11: ρ_i = Σ_j W(x_i − x_j) (eq. 2), C_i = ρ_i/ρ₀ − 1 (eq. 1),
@@ -79,7 +151,7 @@ void FluidModel::leaveSolverNumbers() {
 // G_i = Σ_j ∇W_ij and S_i = Σ_j s_corr,ij ∇W_ij, so that pass costs one multiply-add per pair.
 // Two particles per step of the loop, each summing over its own row in row order (FluidKernels.h, Lanes), or
 // two slots of both rows per AVX instruction (FluidLambdaPass.h).
-void FluidModel::computeLambdas(std::size_t iteration) {
+void FluidModel::computeLambdas(std::size_t iteration, bool newOnly) {
     const long long n = loopCount(state_);
     pairGradX_.resize(neighbours_.laneSlots());
     pairGradY_.resize(neighbours_.laneSlots());
@@ -99,15 +171,17 @@ void FluidModel::computeLambdas(std::size_t iteration) {
                                      gradSumY_.data(),
                                      scorrSumX_.data(),
                                      scorrSumY_.data(),
-                                     n};
+                                     n,
+                                     newOnly ? oldCompression_.data() : nullptr};
     const fluid::LambdaConstants constants{fluid::LaneKernels(kernels_, scorr_), kernels_.selfWeight(),
-                                           1.0 / restDensity_, params_.epsilon};
+                                           1.0 / restDensity_, params_.epsilon, params_.compressionOnly};
     const fluid::LambdaBlocksFunction blocks = fluid::lambdaBlocks(); // AVX where the CPU has it
 #pragma omp parallel if (n >= kParallelMinParticles)
     {
         const auto [first, end] = neighbours_.threadBlocks(); // equal shares of the slots
         blocks(arrays, constants, first, end);
     }
+    if (iteration == kNotProfiled) return;
     const double* constraint = constraint_.data();
     // Serial sums in particle order: the same bits for any thread count.
     const std::uint32_t* rank = neighbours_.rank();
@@ -161,16 +235,19 @@ void FluidModel::applyPositionCorrections() {
 }
 
 // Lines 20–21: v ← (x* − x)/Δt; a particle touching an obstacle does not move into it faster than it moves.
+// With the bounded release, x* there is limitRelease()'s x_v.
 void FluidModel::updateVelocities() {
     const long long n = loopCount(state_);
     const double inverseDt = 1.0 / params_.dt;
     const double margin = params_.particleRadius;
+    const bool limited = params_.releaseLimit > 0;
     const double *x = state_.x.data(), *y = state_.y.data(), *px = px_.data(), *py = py_.data();
+    const double *ux = limited ? velocityX_.data() : px, *uy = limited ? velocityY_.data() : py;
     double *vx = state_.vx.data(), *vy = state_.vy.data();
 #pragma omp parallel for schedule(static) if (n >= kParallelMinParticles)
     for (long long i = 0; i < n; ++i) {
-        vx[i] = (px[i] - x[i]) * inverseDt;
-        vy[i] = (py[i] - y[i]) * inverseDt;
+        vx[i] = (ux[i] - x[i]) * inverseDt;
+        vy[i] = (uy[i] - y[i]) * inverseDt;
         if (!obstacles_.empty()) fluid::obstacleVelocity(obstacles_, margin, px[i], py[i], vx[i], vy[i]);
     }
 }

@@ -38,6 +38,8 @@ struct FluidGpu {
     // their Jacobi partner, λ, ω and a velocity scratch buffer; the step's neighbours of each particle.
     Buffer x[2], v[2], p, pNext, lambdaBuffer, omega, vScratch, slots, status, errorSums, obstacles;
     Buffer neighbourCounts, neighbourList;
+    // The bounded release (FluidSolver.cpp): b_i of the starting positions; the new compression's solve.
+    Buffer oldCompression, newSolve[2];
     int current = 0;
     std::size_t count = 0;
     unsigned neighbourCapacity = kFirstNeighbourCapacity; // entries per particle in neighbourList
@@ -108,8 +110,10 @@ void FluidModelGL::upload() {
     g.current = 0;
     g.x[0].uploadVector(x);
     g.v[0].uploadVector(v);
-    for (Buffer* b : {&g.x[1], &g.v[1], &g.p, &g.pNext, &g.vScratch, &g.slots}) b->reserve(n * 8);
-    for (Buffer* b : {&g.lambdaBuffer, &g.omega, &g.neighbourCounts}) b->reserve(n * 4);
+    for (Buffer* b :
+         {&g.x[1], &g.v[1], &g.p, &g.pNext, &g.vScratch, &g.slots, &g.newSolve[0], &g.newSolve[1]})
+        b->reserve(n * 8);
+    for (Buffer* b : {&g.lambdaBuffer, &g.omega, &g.neighbourCounts, &g.oldCompression}) b->reserve(n * 4);
     g.neighbourList.reserve(std::size_t(g.neighbourCapacity) * n * 4);
     // Cells of at least half the search radius: the 5 × 5 cells around a particle hold its neighbours.
     g.grid.configure(0.0, 0.0, params_.boxWidth, params_.boxHeight, params_.neighbourRadius() / kCellReach, n,
@@ -221,37 +225,64 @@ void FluidModelGL::advance(double /*h*/) { // h = dt, as FluidModel::advance
     storageBarrier();
     ++g.dispatches;
 
-    // Lines 8–19: K Jacobi iterations of λ and Δx.
+    // Lines 8–19: K Jacobi iterations of λ and Δx. The slot past the step's iterations in errorSums takes
+    // the errors of the passes the profile does not show (the bounded release's).
     const auto iterations = static_cast<std::size_t>(params_.iterations);
     g.errorGroups = groupsFor(n, kPairLocal);
-    g.errorSums.reserve(std::max<std::size_t>(1, iterations * g.errorGroups) * 8);
-    for (std::size_t k = 0; k < iterations; ++k) {
+    g.errorSums.reserve(std::max<std::size_t>(1, (iterations + 1) * g.errorGroups) * 8);
+    g.oldCompression.bind(3);
+    auto lambdaPass = [&](const Buffer& positions, std::size_t errorSlot, int oldCompressionMode) {
         g.lambda.use();
         setCommonUniforms(g.lambda);
         g.lambda.set("epsilon", float(params_.epsilon));
-        g.lambda.set("errorOffset", unsigned(k * g.errorGroups));
-        g.p.bind(0);
+        g.lambda.set("errorOffset", unsigned(errorSlot * g.errorGroups));
+        g.lambda.set("oldCompressionMode", oldCompressionMode);
+        g.lambda.set("compressionOnly", int(params_.compressionOnly));
+        positions.bind(0);
         g.lambdaBuffer.bind(1);
         g.errorSums.bind(2);
         g.lambda.dispatch(n, kPairLocal);
         storageBarrier();
+        ++g.dispatches;
+    };
+    auto correctPass = [&](const Buffer& positions, const Buffer& corrected) {
         g.correct.use();
         setCommonUniforms(g.correct);
-        g.p.bind(0);
+        positions.bind(0);
         g.lambdaBuffer.bind(1);
-        g.pNext.bind(2);
+        corrected.bind(2);
         g.correct.dispatch(n, kPairLocal);
         storageBarrier();
+        ++g.dispatches;
+    };
+    // The bounded release (FluidModel::solveNewCompression): b_i at x, then K iterations on C_i − b_i from
+    // x*.
+    const bool limited = params_.releaseLimit > 0;
+    const Buffer* newSolve = &g.p;
+    if (limited) {
+        lambdaPass(g.x[g.current], iterations, 2);
+        for (std::size_t k = 0; k < iterations; ++k) {
+            lambdaPass(*newSolve, iterations, 1);
+            correctPass(*newSolve, g.newSolve[k % 2]);
+            newSolve = &g.newSolve[k % 2];
+        }
+    }
+    for (std::size_t k = 0; k < iterations; ++k) {
+        lambdaPass(g.p, k, 0);
+        correctPass(g.p, g.pNext);
         std::swap(g.p, g.pNext);
-        g.dispatches += 2;
     }
 
     // Lines 20–22: velocities from the displacement, vorticity confinement, XSPH.
     g.velocity.use();
     setCommonUniforms(g.velocity);
     g.velocity.set("inverseDt", float(1.0 / params_.dt));
+    g.velocity.set("limited", int(limited));
+    g.velocity.set("releaseLimit",
+                   float(params_.releaseLimit * std::hypot(gx, gy) * params_.dt * params_.dt));
     g.x[g.current].bind(0);
     g.p.bind(1);
+    newSolve->bind(3);
     g.v[g.current].bind(2);
     g.status.bind(10);
     g.velocity.dispatch(n, kStreamLocal);

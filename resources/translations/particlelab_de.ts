@@ -186,6 +186,10 @@ Wirkt nach „Zurücksetzen“.</translation>
         <translation>Obergrenze der Farbskala</translation>
     </message>
     <message>
+        <source>Compression the solver left from earlier steps moves the particles but adds at most this much velocity per step, so it is not released as a launch when gravity is switched off. Costs a second solve. 0: off, as in the write-up.</source>
+        <translation>Kompression, die der Löser aus früheren Schritten hinterlassen hat, verschiebt die Teilchen, gibt ihnen je Schritt aber höchstens so viel Geschwindigkeit; so schleudert sie das Becken nicht hoch, wenn die Schwerkraft ausgeschaltet wird. Kostet einen zweiten Lösungsdurchgang. 0: aus, wie im Original.</translation>
+    </message>
+    <message>
         <source>Contact diameter of one A disk. The write-up uses 0.01.</source>
         <translation>Kontaktdurchmesser einer A-Scheibe. Das Original verwendet 0.01.</translation>
     </message>
@@ -482,6 +486,10 @@ Wirkt nach „Zurücksetzen“.</translation>
         <translation>Kolbengeschwindigkeit</translation>
     </message>
     <message>
+        <source>Pressure pushes only</source>
+        <translation>Druck drückt nur</translation>
+    </message>
+    <message>
         <source>Pressure window</source>
         <translation>Mittelungszeit des Drucks</translation>
     </message>
@@ -500,6 +508,10 @@ Wirkt nach „Zurücksetzen“.</translation>
     <message>
         <source>Reference distance of the artificial pressure (write-up: 0.3).</source>
         <translation>Bezugsabstand des künstlichen Drucks (Original: 0.3).</translation>
+    </message>
+    <message>
+        <source>Release of old compression</source>
+        <translation>Freigabe alter Kompression</translation>
     </message>
     <message>
         <source>Relaxation ε</source>
@@ -632,6 +644,10 @@ Wirkt nach „Zurücksetzen“.</translation>
     <message>
         <source>The run stops when the total energy exceeds this multiple of its reference.</source>
         <translation>Der Lauf endet, wenn die Gesamtenergie dieses Vielfache ihres Bezugswerts übersteigt.</translation>
+    </message>
+    <message>
+        <source>The density constraint as ρ ≤ ρ₀: compressed fluid pushes apart, under-dense fluid (the free surface, along the walls) does not pull together. Off: the paper&apos;s equality, as in the write-up.</source>
+        <translation>Die Dichtebedingung als ρ ≤ ρ₀: Komprimierte Flüssigkeit drückt auseinander, zu dünne (die freie Oberfläche, entlang der Wände) zieht sich nicht zusammen. Aus: die Gleichung des Artikels, wie im Original.</translation>
     </message>
     <message>
         <source>The write-up&apos;s gravity toggle (key G).</source>
@@ -896,6 +912,10 @@ Wirkt nach „Zurücksetzen“.</translation>
     <message>
         <source>× rms speed</source>
         <translation>× rms-Geschwindigkeit</translation>
+    </message>
+    <message>
+        <source>× |g| Δt</source>
+        <translation>× |g| Δt</translation>
     </message>
     <message>
         <source>× √(g H)</source>

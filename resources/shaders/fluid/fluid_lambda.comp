@@ -1,7 +1,10 @@
 #version 430
 // Algorithm 1, lines 9–11 (FluidModel::computeLambdas): ρ_i = Σ_j W(x_i − x_j) (eq. 2), C_i = ρ_i/ρ₀ − 1
 // (eq. 1), λ_i = −C_i / (Σ_k |∇_k C_i|² + ε) (eq. 11). Also the group's sum and maximum of the
-// compression max(C_i, 0) for the density-error profile.
+// compression max(C_i, 0) for the density-error profile. The bounded release (FluidSolver.cpp,
+// measureOldCompression, solveNewCompression; FluidLambdaPass.cpp, finishBlock): oldCompressionMode 2 stores
+// b_i = max(C_i, 0) of the step's starting positions, 1 solves C_i − b_i; compressionOnly projects
+// max(target, 0), the inequality ρ_i ≤ ρ₀.
 layout(local_size_x = 128) in;
 #include "common/common.glsl"
 #include "common/cells.glsl"
@@ -11,11 +14,14 @@ layout(local_size_x = 128) in;
 layout(std430, binding = 0) readonly buffer Predicted { vec2 p[]; };
 layout(std430, binding = 1) writeonly buffer Lambda { float lambda[]; };
 layout(std430, binding = 2) writeonly buffer ErrorSums { vec2 errorSums[]; }; // (sum, max) per group
+layout(std430, binding = 3) buffer OldCompression { float oldCompression[]; }; // b_i
 
 uniform uint count;
 #include "fluid/fluid_neighbour_walk.glsl"
 uniform float inverseRest, epsilon;
 uniform uint errorOffset; // this iteration's first group slot
+uniform int oldCompressionMode; // 0: C_i; 1: C_i − b_i; 2: store b_i = max(C_i, 0)
+uniform bool compressionOnly;
 
 shared float groupSum[128], groupMax[128];
 
@@ -38,7 +44,10 @@ void main() {
             sumSquares += f * f * r2;
         }
         const float constraint = rho * inverseRest - 1.0;
-        lambda[i] = -constraint / ((dot(g, g) + sumSquares) * inverseRest * inverseRest + epsilon);
+        if (oldCompressionMode == 2) oldCompression[i] = max(constraint, 0.0);
+        float target = oldCompressionMode == 1 ? constraint - oldCompression[i] : constraint;
+        if (compressionOnly) target = max(target, 0.0);
+        lambda[i] = -target / ((dot(g, g) + sumSquares) * inverseRest * inverseRest + epsilon);
         compression = max(constraint, 0.0);
     }
     const uint t = gl_LocalInvocationID.x;

@@ -166,9 +166,10 @@ private slots:
                                              o.values[5].data(),
                                              o.values[6].data(),
                                              o.values[7].data(),
-                                             count};
+                                             count,
+                                             nullptr};
             const fluid::LambdaConstants constants{fluid::LaneKernels(kernels, scorr), kernels.selfWeight(),
-                                                   1.0 / 1.3, 100.0};
+                                                   1.0 / 1.3, 100.0, false};
             blocksFunction(arrays, constants, 0, blocks);
             return o;
         };
