@@ -62,7 +62,10 @@ double availableMemoryBytes() {
 void requireMemory(const MemoryNeed& need) {
     const double usable = kUsableMemoryShare * availableMemoryBytes();
     if (!(need.bytes > usable)) return;
-    const auto bytes = [](double b) { return byteSize(static_cast<std::size_t>(std::max(0.0, b))); };
+    const auto bytes = [](double b) { // a need can be far beyond any size_t (1e30 bytes of a huge count)
+        return byteSize(b >= static_cast<double>(SIZE_MAX) ? SIZE_MAX
+                                                           : static_cast<std::size_t>(std::max(0.0, b)));
+    };
     throw ParamError(need.key, "{" + need.key + "} lets the run hold about " + bytes(need.bytes) +
                                    " of memory, more than the " + bytes(usable) +
                                    " this machine can give it now; " + need.fix(usable));
