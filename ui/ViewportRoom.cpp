@@ -93,6 +93,11 @@ void ViewportRoom::refit() {
 void ViewportRoom::keepShare() {
     pending_ = false;
     if (!window_->isVisible()) return;
+    // Tall enough again for the plots that became tabs: they stand one above the other as before.
+    if (stackWhenTall(window_, Qt::RightDockWidgetArea) | stackWhenTall(window_, Qt::LeftDockWidgetArea)) {
+        refit(); // measured again once the plots have their new heights, not the tabs' old ones
+        return;
+    }
     wrapToolBars(window_);
     settle();
     // Too short for the plots stacked at a readable height: they become tabs.

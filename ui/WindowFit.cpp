@@ -28,6 +28,21 @@ QSize frameOf(const QWidget* window) {
     if (!window->isVisible()) return {0, 0};
     return window->frameGeometry().size() - window->size();
 }
+
+// The window properties under which tabifyWhenShort keeps what stackWhenTall needs, per area.
+QByteArray stackKey(Qt::DockWidgetArea area) {
+    return "pl_stackedDocks" + QByteArray::number(int(area));
+}
+
+// The docks the window shows (in tabs or not), which decide whether a saved layout still applies.
+QStringList shownDockNames(const QMainWindow* window) {
+    QStringList names;
+    for (const QDockWidget* dock : window->findChildren<QDockWidget*>())
+        if (!dock->isHidden()) names << dock->objectName();
+    names.sort();
+    return names;
+}
+
 } // namespace
 
 QSize firstWindowSize(const QWidget* window, QSize preferred) {
@@ -64,10 +79,46 @@ bool tabifyWhenShort(QMainWindow* window, Qt::DockWidgetArea area, int panelHeig
             squeezed |=
                 canvas->isVisible() && canvas->height() < panelHeight * std::max(1, canvas->axisRectCount());
     }
+    const QByteArray key = stackKey(area);
+    if (shown.size() >= 2 && !squeezed) { // the layout to come back to, and the height it needs
+        window->setProperty(key + "Fits", window->height());
+        window->setProperty(key + "FitState", window->saveState());
+    }
     if (shown.size() < 2 || !squeezed) return false;
+    // The layout before, and the height at which each of its plots has panelHeight again, for
+    // stackWhenTall: without them the docks stayed tabs after the window was enlarged.
+    int missing = 0;
+    for (const QDockWidget* dock : std::as_const(shown)) {
+        int own = 0;
+        for (const QCustomPlot* canvas : dock->findChildren<QCustomPlot*>())
+            if (canvas->isVisible())
+                own = std::max(own, panelHeight * std::max(1, canvas->axisRectCount()) - canvas->height());
+        missing += own;
+    }
+    // The height at which they last stood apart whole, where known, else an estimate from what each lacks.
+    const int fits = window->property(key + "Fits").toInt();
+    const int needed = window->height() + missing;
+    const QByteArray fitState = window->property(key + "FitState").toByteArray();
+    window->setProperty(key + "State", fits > window->height() ? fitState : window->saveState());
+    window->setProperty(key + "Height", fits > window->height() ? std::min(fits, needed) : needed);
+    window->setProperty(key + "Docks", shownDockNames(window));
     for (QDockWidget* dock : std::as_const(docks))
         if (dock != shown.front()) window->tabifyDockWidget(shown.front(), dock);
     shown.front()->raise(); // the plot on top stays in front
+    return true;
+}
+
+bool stackWhenTall(QMainWindow* window, Qt::DockWidgetArea area) {
+    const QByteArray key = stackKey(area);
+    const QByteArray state = window->property(key + "State").toByteArray();
+    if (state.isEmpty()) return false;
+    if (window->property(key + "Docks").toStringList() != shownDockNames(window)) {
+        window->setProperty(key + "State", QVariant()); // another scene's docks: that layout is gone
+        return false;
+    }
+    if (window->height() < window->property(key + "Height").toInt()) return false;
+    window->setProperty(key + "State", QVariant());
+    window->restoreState(state);
     return true;
 }
 

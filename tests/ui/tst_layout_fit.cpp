@@ -167,6 +167,43 @@ private slots:
         window.document()->setModified(false);
     }
 
+    // Issue 45: the docks that became tabs in a short window stayed tabs after it was enlarged. Back at
+    // the size they stood one above the other, they do so again.
+    void docksStackAgainWhenTheWindowGrows() {
+        ui::MainWindow window;
+        QVERIFY(window.openPreset("dsmc-bkw"));
+        const auto shownPlots = [&window] { // the plot docks the right area shows now, not in hidden tabs
+            QStringList names;
+            for (QDockWidget* dock : window.findChildren<QDockWidget*>())
+                if (dock->isVisible() && !dock->visibleRegion().isEmpty() &&
+                    window.dockWidgetArea(dock) == Qt::RightDockWidgetArea)
+                    names << dock->objectName();
+            names.sort();
+            return names;
+        };
+        // The two histograms alone, one above the other, as a layout the user made comes back.
+        auto* vx = window.findChild<QDockWidget*>("vxHistogramDock");
+        QVERIFY(vx);
+        for (QDockWidget* dock : window.findChildren<QDockWidget*>())
+            if (window.dockWidgetArea(dock) == Qt::RightDockWidgetArea &&
+                dock->objectName() != QLatin1String("speedHistogramDock"))
+                dock->close();
+        window.removeDockWidget(vx);
+        window.addDockWidget(Qt::RightDockWidgetArea, vx, Qt::Vertical);
+        vx->show();
+        window.resize(kScreen);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QTest::qWait(150);
+        const QStringList stacked = shownPlots();
+        QVERIFY2(stacked.size() >= 2, qPrintable(stacked.join(", ")));
+        window.resize(kScreen.width(), 460);
+        QTRY_COMPARE(shownPlots().size(), 1);
+        window.resize(kScreen);
+        QTRY_COMPARE(shownPlots(), stacked);
+        window.document()->setModified(false);
+    }
+
     // Present mode in projector mode on the whole 1024×700 screen, as a teacher starts it (Ctrl+Shift+P,
     // then F5), in English and German: every control of each kind's board in reach without scrolling and
     // its plot's data area (inside the axes) at least test::kReadableDataHeight high (before: a 30 px plot,
