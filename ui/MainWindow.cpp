@@ -191,6 +191,13 @@ void MainWindow::createDocks() {
     lab->setFloating(true);
     lab->resize(920, 680);
     lab->hide();
+    // On a 1024 × 700 screen that ran past the bottom edge: each time it opens, it is fitted into the
+    // screen's available area, the window manager's frame included.
+    connect(lab, &QDockWidget::visibilityChanged, lab, [lab](bool visible) {
+        if (!visible || !lab->isFloating()) return;
+        lab->resize(firstWindowSize(lab, lab->size()));
+        keepInsideScreen(lab);
+    });
 }
 
 bool MainWindow::dockApplies(const QDockWidget* dock) const {

@@ -12,6 +12,7 @@
 #include "present/PresentMode.h"
 #include "present/PresentPanel.h"
 
+#include <QAction>
 #include <QDockWidget>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -201,6 +202,30 @@ private slots:
         QTRY_COMPARE(shownPlots().size(), 1);
         window.resize(kScreen);
         QTRY_COMPARE(shownPlots(), stacked);
+        window.document()->setModified(false);
+    }
+
+    // Issue 45: on a 1024 × 700 screen the methods lab (a floating window of 920 × 680 and its frame)
+    // opened past the screen's bottom edge. Opened from the View menu, it lies inside the screen's
+    // available area with the frame a window manager adds.
+    void theMethodsLabOpensInsideTheScreen() {
+        ui::MainWindow window;
+        QVERIFY(window.openPreset("gas-classroom"));
+        showInScreen(window);
+        auto* lab = window.findChild<QDockWidget*>("methodsLabDock");
+        QVERIFY(lab && lab->isFloating() && !lab->isVisible());
+        lab->toggleViewAction()->trigger();
+        QTRY_VERIFY(lab->isVisible());
+        const QRect screen = QGuiApplication::primaryScreen()->availableGeometry();
+        // Xvfb has no window manager: the frame one adds (title bar and borders) is counted as well.
+        const QRect framed = lab->frameGeometry().adjusted(0, 0, 12, 40);
+        qInfo("methods lab at %d,%d %dx%d", lab->x(), lab->y(), lab->width(), lab->height());
+        QVERIFY2(screen.contains(framed), qPrintable(QString("%1,%2 %3x%4 with its frame")
+                                                         .arg(framed.x())
+                                                         .arg(framed.y())
+                                                         .arg(framed.width())
+                                                         .arg(framed.height())));
+        lab->hide();
         window.document()->setModified(false);
     }
 
