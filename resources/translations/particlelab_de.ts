@@ -1957,6 +1957,10 @@ Wirkt nach „Zurücksetzen“.</translation>
         <source>{1} lets the run hold about %1 MiB of memory, more than the %2 MiB this machine can give it now; use {2} ≤ %3</source>
         <translation>mit {1} braucht der Lauf etwa %1 MiB Speicher, mehr als die %2 MiB, die dieser Rechner ihm jetzt geben kann; {2} ≤ %3 verwenden</translation>
     </message>
+    <message>
+        <source>{1} is out of range: %1 (allowed: [%2, %3] × |g| Δt)</source>
+        <translation>{1} liegt außerhalb des Bereichs: %1 (erlaubt: [%2; %3] × |g| Δt)</translation>
+    </message>
 </context>
 <context>
     <name>pl::ui::Allowed</name>
