@@ -16,6 +16,7 @@
 #include <QProgressDialog>
 #include <QStatusBar>
 #include <QToolBar>
+#include <algorithm>
 
 namespace pl::ui {
 
@@ -56,9 +57,15 @@ void MainWindow::createRecordAction(QMenu* sim, QToolBar* bar) {
         recordAction_->setChecked(false); // until the clip starts
         RecordDialog dialog(controller_, this);
         if (dialog.exec() != QDialog::Accepted) return;
+        // The format chosen in the dialog comes first: a name typed without a suffix gets its suffix.
+        QStringList filters =
+            tr("MP4 video (*.mp4);;WebM video (*.webm);;GIF (*.gif)").split(QStringLiteral(";;"));
+        const QString suffix = QStringLiteral("*.") + clipSuffix(dialog.format());
+        std::stable_partition(filters.begin(), filters.end(),
+                              [&suffix](const QString& filter) { return filter.contains(suffix); });
         const QString chosen = files::saveFileName(this, files::Place::Exports, tr("Record clip"),
                                                    document_->title() + "." + clipSuffix(dialog.format()),
-                                                   tr("MP4 video (*.mp4);;WebM video (*.webm);;GIF (*.gif)"));
+                                                   filters.join(QStringLiteral(";;")));
         const QString path = clipPathFor(chosen, dialog.format());
         const QString error =
             path.isEmpty() ? QString() : recorder_->start(path, document_->title(), dialog.options());
