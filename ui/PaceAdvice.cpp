@@ -85,8 +85,9 @@ void PaceAdvice::judge() {
     const QString perStep = QLocale().toString(wall * kMillisecondsPerSecond / steps, 'f', 1);
     const QString particles = QLocale().toString(static_cast<qlonglong>(model->particleCount()));
     // Short, beside the status line; the sentence in full as its tooltip.
-    text_->setText(
-        tr("%1 % of the watchable pace: %2 ms a step for %3 particles").arg(percent, perStep, particles));
+    // Short, so that the status line beside it keeps its room at 1024 px; the work of a step is in the
+    // tooltip and the accessible description.
+    text_->setText(tr("%1 % of the watchable pace").arg(percent));
     text_->setToolTip(
         tr("This machine runs the scene at %1 % of the pace at which it is watchable: each step "
            "takes %2 ms for %3 particles. Fewer particles keep the pace.")
@@ -94,9 +95,10 @@ void PaceAdvice::judge() {
     if (advised_.empty()) {
         use_->hide();
     } else {
-        use_->setText(tr("Use %1 (restarts)").arg(describe(advised_, model->paramSpecs())));
-        use_->setToolTip(tr("A lighter experiment that this machine runs at the watchable pace; nothing "
-                            "changes until you press it."));
+        use_->setText(tr("Use %1").arg(describe(advised_, model->paramSpecs())));
+        use_->setToolTip(
+            tr("A lighter experiment that this machine runs at the watchable pace; it restarts the "
+               "experiment, and nothing changes until you press it."));
         use_->show();
     }
     show();

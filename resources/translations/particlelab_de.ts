@@ -3242,20 +3242,20 @@ Wirkt nach „Zurücksetzen“.</translation>
 <context>
     <name>pl::ui::PaceAdvice</name>
     <message>
-        <source>%1 % of the watchable pace: %2 ms a step for %3 particles</source>
-        <translation>%1 % des Tempos der Szene: %2 ms je Schritt für %3 Teilchen</translation>
+        <source>%1 % of the watchable pace</source>
+        <translation>%1 % des Tempos der Szene</translation>
     </message>
     <message>
         <source>This machine runs the scene at %1 % of the pace at which it is watchable: each step takes %2 ms for %3 particles. Fewer particles keep the pace.</source>
         <translation>Dieser Rechner führt die Szene mit %1 % des Tempos aus, bei dem man ihr noch folgen kann: Jeder Schritt dauert %2 ms für %3 Teilchen. Mit weniger Teilchen hält er das Tempo.</translation>
     </message>
     <message>
-        <source>Use %1 (restarts)</source>
-        <translation>%1 verwenden (startet neu)</translation>
+        <source>Use %1</source>
+        <translation>%1 verwenden</translation>
     </message>
     <message>
-        <source>A lighter experiment that this machine runs at the watchable pace; nothing changes until you press it.</source>
-        <translation>Ein leichteres Experiment, das dieser Rechner im Tempo der Szene ausführt; nichts ändert sich, bevor Sie hier klicken.</translation>
+        <source>A lighter experiment that this machine runs at the watchable pace; it restarts the experiment, and nothing changes until you press it.</source>
+        <translation>Ein leichteres Experiment, das dieser Rechner im Tempo der Szene ausführt; es startet das Experiment neu, und nichts ändert sich, bevor Sie hier klicken.</translation>
     </message>
 </context>
 <context>
