@@ -92,4 +92,53 @@ inline void obstacleVelocity(const std::vector<Obstacle>& obstacles, double marg
     }
 }
 
+// Akinci et al. 2013's splines of the surface forces, in q = r/h and scaled to 1 at their peaks. Cohesion,
+// eq. 2 (32/(π h⁹) there): 64 (1 − q)³ q³ for ½ < q ≤ 1 and 2 · 64 (1 − q)³ q³ − 1 for 0 < q ≤ ½, which
+// attracts beyond q ≈ 0.27 and repels closer, so an evenly surrounded particle feels no net pull.
+inline double cohesionSpline(double q) {
+    if (!(q > 0) || q >= 1) return 0.0;
+    const double product = (1 - q) * q;
+    const double spline = 64 * product * product * product;
+    return q > 0.5 ? spline : 2 * spline - 1;
+}
+
+// Adhesion, eq. 7 (0.007/h^3.25 there): (−16 q² + 24 q − 8)^¼ for ½ < q ≤ 1, 1 at q = ¾.
+inline double adhesionSpline(double q) {
+    if (!(q > 0.5) || q >= 1) return 0.0;
+    return std::sqrt(std::sqrt(-16 * q * q + 24 * q - 8));
+}
+
+// The walls' and obstacles' pull on a particle at (x, y): β A(d/h) towards the nearest point of each wall
+// of the box [0, W] × [0, H] and of each obstacle, d its distance from it (eq. 6 with the boundary's
+// particles merged into its surface).
+struct Adhesion {
+    double width, height, h, strength;
+
+    void add(const std::vector<Obstacle>& obstacles, double x, double y, double& ax, double& ay) const {
+        const double inverseH = 1.0 / h;
+        ax += strength * (adhesionSpline((width - x) * inverseH) - adhesionSpline(x * inverseH));
+        ay += strength * (adhesionSpline((height - y) * inverseH) - adhesionSpline(y * inverseH));
+        for (const Obstacle& o : obstacles) {
+            double dx = x - o.x, dy = y - o.y, d;
+            if (o.shape == Obstacle::Shape::Disc) {
+                const double centre = std::sqrt(dx * dx + dy * dy);
+                d = centre - o.radius;
+                if (!(centre > 0)) continue;
+                dx /= centre;
+                dy /= centre;
+            } else { // the nearest point of the box's outline
+                const double outX = std::max(std::abs(dx) - o.halfWidth, 0.0),
+                             outY = std::max(std::abs(dy) - o.halfHeight, 0.0);
+                d = std::sqrt(outX * outX + outY * outY);
+                if (!(d > 0)) continue;
+                dx = std::copysign(outX, dx) / d;
+                dy = std::copysign(outY, dy) / d;
+            }
+            const double pull = strength * adhesionSpline(d * inverseH);
+            ax -= pull * dx;
+            ay -= pull * dy;
+        }
+    }
+};
+
 } // namespace pl::fluid

@@ -83,6 +83,7 @@ void FluidModel::advance(double /*h*/) { // h = dt: the fluid runs forwards only
     leaveSolverNumbers();
     updateVelocities();
     if (params_.vorticity > 0) applyVorticityConfinement();
+    if (params_.cohesion > 0 || params_.adhesion > 0) applySurfaceForces();
     if (params_.xsph > 0) applyXsphViscosity();
     commitPositions();
 }

@@ -88,6 +88,7 @@ protected:
     void leaveSolverNumbers();
     void updateVelocities();
     void applyVorticityConfinement();
+    void applySurfaceForces();
     void applyXsphViscosity();
     void commitPositions();
     void drainOverCap();

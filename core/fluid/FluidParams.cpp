@@ -139,6 +139,20 @@ const std::vector<ParamField<FluidParams>>& FluidParams::fields() {
         real(&P::vorticity, makeSpec("vorticity", "Vorticity confinement ε", "", "Solver",
                                      "Re-injects vorticity lost to damping; 0: off, as in the write-up.", 0,
                                      100, 0.01, d.vorticity, true));
+        real(&P::cohesion,
+             makeSpec(
+                 "cohesion", "Cohesion γ", "L/s²", "Solver",
+                 "Attraction between neighbours, the origin of surface tension: it holds the free surface "
+                 "together where nothing else does (gravity switched off). The pull of one neighbour at "
+                 "h/2; 0: off, as in the paper and the write-up.",
+                 0, 1000, 0.5, d.cohesion, true));
+        real(
+            &P::adhesion,
+            makeSpec("adhesion", "Adhesion β", "L/s²", "Solver",
+                     "Pull of the walls and obstacles on the fluid within h of them, so it wets them instead "
+                     "of balling up under cohesion. The pull at 3h/4; 0: off, as in the paper and the "
+                     "write-up.",
+                     0, 1000, 0.5, d.adhesion, true));
 
         real(&P::spawnSpacing, makeSpec("spawn_spacing", "Spawn spacing / h", "", "Particles",
                                         "Grid spacing of spawned fluid in units of h (write-up: 0.8).", 0.2,

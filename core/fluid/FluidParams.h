@@ -49,6 +49,11 @@ struct FluidParams {
     // release_limit |g| Δt to the velocity. Typical 2, range 0–100; 0: off (the write-up, one solve).
     double releaseLimit = 0.0;
     double vorticity = 0.0; // vorticity confinement ε_vort; 0: off
+    // Surface forces (Akinci et al. 2013; FluidSolver.cpp, applySurfaceForces), each as the acceleration its
+    // spline gives at its peak [L/s²]: cohesion γ, the attraction between neighbours that surface tension
+    // comes from (one neighbour at h/2), and adhesion β, the pull of a wall or obstacle on fluid 3h/4 from
+    // it, so the fluid wets the walls. 0: off (the paper, the write-up).
+    double cohesion = 0.0, adhesion = 0.0;
 
     // Particles
     double spawnSpacing = 0.8; // spawn lattice spacing / h

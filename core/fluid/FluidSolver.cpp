@@ -300,6 +300,45 @@ void FluidModel::applyVorticityConfinement() {
     }
 }
 
+// Surface forces (Akinci, Akinci & Teschner 2013, "Versatile surface tension and adhesion for SPH fluids"):
+// cohesion, eq. 1, a_i = −γ Σ_j C(r_ij) x̂_ij, and adhesion to the walls and obstacles, eq. 6, with their
+// splines scaled to 1 at their peaks (FluidBoundaries.h, cohesionSpline and adhesionSpline). Neighbours
+// beyond h/2 attract and closer ones repel, so the interior, surrounded evenly, feels nothing and the free
+// surface is pulled in; the walls draw the fluid within h of them, so it wets them instead of balling up.
+// Without them nothing but gravity holds a particle that the solver's noise lifts off the surface
+// (docs/fluid.md#surface-forces). The neighbour pairs are the step's, at x*, as in the vorticity pass; each
+// row is summed in its order, so any thread count gives the same bits.
+void FluidModel::applySurfaceForces() {
+    const long long n = loopCount(state_);
+    const double *px = px_.data(), *py = py_.data();
+    double *vx = state_.vx.data(), *vy = state_.vy.data();
+    const std::uint32_t *lanes = neighbours_.laneEntries(), *counts = neighbours_.counts(),
+                        *order = neighbours_.order(), *rank = neighbours_.rank();
+    const fluid::Neighbours& list = neighbours_;
+    const fluid::Adhesion adhesion{params_.boxWidth, params_.boxHeight, params_.h, params_.adhesion};
+    const double cohesion = params_.cohesion, inverseH = 1.0 / params_.h, dt = params_.dt;
+#pragma omp parallel for schedule(static) if (n >= kParallelMinParticles)
+    for (long long i = 0; i < n; ++i) {
+        double ax = 0, ay = 0;
+        const std::uint32_t solver = rank[i];
+        const std::uint32_t* row = lanes + list.rowStart(solver);
+        for (std::uint32_t t = 0; t < counts[solver]; ++t) {
+            const std::uint32_t j = order[row[2 * t]];
+            const double dx = px[i] - px[j], dy = py[i] - py[j];
+            const double r = std::sqrt(dx * dx + dy * dy);
+            if (!(r > 0)) continue; // the particle itself (or one on top of it: no direction)
+            const double c = fluid::cohesionSpline(r * inverseH) / r;
+            ax -= c * dx;
+            ay -= c * dy;
+        }
+        ax *= cohesion;
+        ay *= cohesion;
+        if (adhesion.strength > 0) adhesion.add(obstacles_, px[i], py[i], ax, ay);
+        vx[i] += dt * ax;
+        vy[i] += dt * ay;
+    }
+}
+
 // Line 22, second half (eq. 17): XSPH viscosity v_i ← v_i + c Σ_j (v_j − v_i) W_ij, two particles per step
 // of the loop as in the λ pass; a padded slot has W = 0 and adds +0.
 void FluidModel::applyXsphViscosity() {

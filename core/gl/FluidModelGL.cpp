@@ -32,7 +32,7 @@ struct FluidGpu {
     ComputeProgram predict{"fluid/fluid_predict.comp"}, neighbours{"fluid/fluid_neighbours.comp"},
         lambda{"fluid/fluid_lambda.comp"}, correct{"fluid/fluid_correct.comp"},
         velocity{"fluid/fluid_velocity.comp"}, vorticity{"fluid/fluid_vorticity.comp"},
-        xsph{"fluid/fluid_xsph.comp"};
+        xsph{"fluid/fluid_xsph.comp"}, surfaceForces{"fluid/fluid_surface_forces.comp"};
     GpuCellGrid grid;
     // Cell-ordered state: positions x, velocities v (ping-pong across the sort), predictions p and
     // their Jacobi partner, λ, ω and a velocity scratch buffer; the step's neighbours of each particle.
@@ -303,6 +303,19 @@ void FluidModelGL::advance(double /*h*/) { // h = dt, as FluidModel::advance
         }
         std::swap(g.v[g.current], g.vScratch);
         g.dispatches += 2;
+    }
+    if (params_.cohesion > 0 || params_.adhesion > 0) { // FluidModel::applySurfaceForces
+        g.surfaceForces.use();
+        setCommonUniforms(g.surfaceForces);
+        g.surfaceForces.set("cohesion", float(params_.cohesion));
+        g.surfaceForces.set("adhesion", float(params_.adhesion));
+        g.surfaceForces.set("world", float(params_.boxWidth), float(params_.boxHeight));
+        g.surfaceForces.set("dt", float(params_.dt));
+        g.p.bind(0);
+        g.v[g.current].bind(1);
+        g.surfaceForces.dispatch(n, kPairLocal);
+        storageBarrier();
+        ++g.dispatches;
     }
     if (params_.xsph > 0) {
         g.xsph.use();

@@ -1961,6 +1961,22 @@ Wirkt nach „Zurücksetzen“.</translation>
         <source>{1} is out of range: %1 (allowed: [%2, %3] × |g| Δt)</source>
         <translation>{1} liegt außerhalb des Bereichs: %1 (erlaubt: [%2; %3] × |g| Δt)</translation>
     </message>
+    <message>
+        <source>Adhesion β</source>
+        <translation>Adhäsion β</translation>
+    </message>
+    <message>
+        <source>Attraction between neighbours, the origin of surface tension: it holds the free surface together where nothing else does (gravity switched off). The pull of one neighbour at h/2; 0: off, as in the paper and the write-up.</source>
+        <translation>Anziehung zwischen Nachbarn, der Ursprung der Oberflächenspannung: Sie hält die freie Oberfläche zusammen, wo nichts anderes es tut (Schwerkraft ausgeschaltet). Der Zug eines Nachbarn im Abstand h/2; 0: aus, wie im Artikel und im Original.</translation>
+    </message>
+    <message>
+        <source>Cohesion γ</source>
+        <translation>Kohäsion γ</translation>
+    </message>
+    <message>
+        <source>Pull of the walls and obstacles on the fluid within h of them, so it wets them instead of balling up under cohesion. The pull at 3h/4; 0: off, as in the paper and the write-up.</source>
+        <translation>Zug der Wände und Hindernisse auf die Flüssigkeit im Abstand bis h, sodass sie sie benetzt, statt sich unter der Kohäsion zusammenzuballen. Der Zug im Abstand 3h/4; 0: aus, wie im Artikel und im Original.</translation>
+    </message>
 </context>
 <context>
     <name>pl::ui::Allowed</name>

@@ -111,12 +111,11 @@ private slots:
         // Parameters a built-in gained or changed after the file was written: the old file keeps the
         // value it always had (the shock tube's moving sampling window came after schema 2; the fluid
         // obstacle's pool, which gravity switched off no longer launches, pushes only, with a limited
-        // release and no artificial pressure).
+        // release, no artificial pressure, and cohesion and adhesion holding its surface).
         const std::set<std::pair<std::string, std::string>> gainedSince{
-            {"tunnel-shock-tube", "sample_window"},
-            {"fluid-obstacle", "compression_only"},
-            {"fluid-obstacle", "release_limit"},
-            {"fluid-obstacle", "scorr_k"}};
+            {"tunnel-shock-tube", "sample_window"}, {"fluid-obstacle", "compression_only"},
+            {"fluid-obstacle", "release_limit"},    {"fluid-obstacle", "scorr_k"},
+            {"fluid-obstacle", "cohesion"},         {"fluid-obstacle", "adhesion"}};
         Preset loaded = old, current = twin;
         for (const auto& [name, key] : gainedSince)
             if (name == stem.toStdString()) loaded.params.erase(key), current.params.erase(key);

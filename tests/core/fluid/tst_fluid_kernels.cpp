@@ -3,6 +3,7 @@
 // antisymmetric in the pair; s_corr is −k at r = Δq h. The λ pass's and the neighbour scan's wide builds
 // (AVX, AVX-512) give the SSE2 builds' bits.
 #include "common/CellList.h"
+#include "fluid/FluidBoundaries.h"
 #include "fluid/FluidKernels.h"
 #include "fluid/FluidLambdaPass.h"
 #include "fluid/FluidParams.h"
@@ -36,6 +37,71 @@ template <class F> double integrateOverDisc(F f, double h) {
 class TestFluidKernels : public QObject {
     Q_OBJECT
 private slots:
+    // Akinci et al. 2013's splines (eqs. 2 and 7) up to their constants, 1 at their peaks.
+    void surfaceForceSplinesAreAkincisScaledToTheirPeaks() {
+        const double h = 1.3;
+        const auto akinciCohesion = [&](double r) { // eq. 2 without 32/(π h⁹)
+            const double a = std::pow(h - r, 3) * std::pow(r, 3);
+            return 2 * r > h ? a : 2 * a - std::pow(h, 6) / 64;
+        };
+        const auto akinciAdhesion = [&](double r) { // eq. 7 without 0.007/h^3.25
+            return std::pow(-4 * r * r / h + 6 * r - 2 * h, 0.25);
+        };
+        for (int k = 1; k < 100; ++k) {
+            const double q = k / 100.0;
+            QVERIFY(std::abs(fluid::cohesionSpline(q) - akinciCohesion(q * h) / akinciCohesion(h / 2)) <
+                    1e-12);
+            if (q > 0.5)
+                QVERIFY(std::abs(fluid::adhesionSpline(q) -
+                                 akinciAdhesion(q * h) / akinciAdhesion(0.75 * h)) < 1e-12);
+            else
+                QCOMPARE(fluid::adhesionSpline(q), 0.0);
+        }
+        QCOMPARE(fluid::cohesionSpline(0.5), 1.0);
+        QCOMPARE(fluid::adhesionSpline(0.75), 1.0);
+        QCOMPARE(fluid::cohesionSpline(1.0), 0.0);
+        QCOMPARE(fluid::cohesionSpline(0.0), 0.0); // the particle itself: no direction, no force
+        QVERIFY(fluid::cohesionSpline(1e-9) < -0.999999);
+    }
+
+    // The cohesion of a lattice at the preset's spacing on one of its particles: none inside, a pull into the
+    // fluid at its surface (and so surface tension). The adhesion pulls the second layer to a wall, not the
+    // first, and points to a disc's centre.
+    void cohesionPullsTheSurfaceInAndLeavesTheInterior() {
+        const double h = 1.0, d = 0.5;
+        const auto pull = [&](bool halfPlane) {
+            double ax = 0, ay = 0;
+            for (int a = -4; a <= 4; ++a)
+                for (int b = -4; b <= (halfPlane ? 0 : 4); ++b) {
+                    const double dx = -a * d, dy = -b * d, r = std::hypot(dx, dy); // x_i − x_j, x_i at 0
+                    if (r == 0) continue;
+                    ax -= fluid::cohesionSpline(r / h) / r * dx;
+                    ay -= fluid::cohesionSpline(r / h) / r * dy;
+                }
+            return std::pair{ax, ay};
+        };
+        const auto [insideX, insideY] = pull(false);
+        QVERIFY(std::abs(insideX) < 1e-12 && std::abs(insideY) < 1e-12);
+        const auto [surfaceX, surfaceY] = pull(true);
+        QVERIFY(std::abs(surfaceX) < 1e-12);
+        QVERIFY2(surfaceY < -0.5, qPrintable(QString::number(surfaceY))); // towards the fluid below
+
+        const fluid::Adhesion adhesion{20, 10, h, 2.0};
+        double ax = 0, ay = 0;
+        adhesion.add({}, 5, 0.25, ax, ay); // the first layer, at the particle radius
+        QCOMPARE(ay, 0.0);
+        adhesion.add({}, 5, 0.75, ax, ay);
+        QCOMPARE(ay, -2.0);
+        QCOMPARE(ax, 0.0);
+        Obstacle disc;
+        disc.x = 10;
+        disc.y = 5;
+        disc.radius = 2;
+        ax = ay = 0;
+        adhesion.add({disc}, 10 + 0.6 * (2 + 0.75), 5 + 0.8 * (2 + 0.75), ax, ay);
+        QVERIFY(std::abs(ax + 2.0 * 0.6) < 1e-12 && std::abs(ay + 2.0 * 0.8) < 1e-12);
+    }
+
     void twoDimensionalConstantsIntegrateToOne_data() {
         QTest::addColumn<double>("h");
         QTest::newRow("write-up h") << 1.1;
