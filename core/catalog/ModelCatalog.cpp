@@ -1,4 +1,5 @@
-// The registry: the registrations of every model kind (one line each), lookups and built-in presets.
+// The registry: the registrations of every model kind (collected from the kinds' folders by the build),
+// lookups and built-in presets.
 #include "ModelCatalog.h"
 
 #include "common/AtomicFile.h"
@@ -15,20 +16,30 @@
 
 namespace pl {
 
-// The registrations, each defined in its kind's folder: a new kind adds one line to each list.
-const ModelDescriptor& gasRegistration();    // gas/GasRegistration.cpp
-const ModelDescriptor& dsmcRegistration();   // dsmc/DsmcRegistration.cpp
-const ModelDescriptor& fluidRegistration();  // fluid/FluidRegistration.cpp
-const ModelDescriptor& tunnelRegistration(); // tunnel/TunnelRegistration.cpp
-
 namespace {
+// What every registration must declare; throws std::invalid_argument naming the kind otherwise.
+void requireComplete(const ModelDescriptor& descriptor) {
+    if (descriptor.kind.empty() || descriptor.units.name.empty() || descriptor.units.time.empty() ||
+        !(descriptor.watchableRate > 0) || !descriptor.specs || !descriptor.create ||
+        !descriptor.particleCount)
+        throw std::invalid_argument(
+            "the model kind '" + descriptor.kind +
+            "' needs a name, its units and unit of time, a watchable rate, parameter specs, a creator and a "
+            "particle count");
+    if (descriptor.stateArrays.x.empty() != descriptor.stateArrays.y.empty() ||
+        (!descriptor.stateArrays.id.empty() && descriptor.stateArrays.x.empty()))
+        throw std::invalid_argument("the model kind '" + descriptor.kind +
+                                    "' names both position arrays or none, and an identity only beside them");
+}
+
+// The built-in kinds (each folder of core/ with a kind.cmake; RegisteredKinds.cpp is generated from
+// them), then those registered from outside.
 std::vector<std::reference_wrapper<const ModelDescriptor>>& registeredKinds() {
-    static std::vector<std::reference_wrapper<const ModelDescriptor>> list{
-        gasRegistration(),
-        dsmcRegistration(),
-        fluidRegistration(),
-        tunnelRegistration(),
-    };
+    static std::vector<std::reference_wrapper<const ModelDescriptor>> list = [] {
+        std::vector<std::reference_wrapper<const ModelDescriptor>> kinds = builtInKinds();
+        for (const ModelDescriptor& d : kinds) requireComplete(d);
+        return kinds;
+    }();
     return list;
 }
 } // namespace
@@ -38,12 +49,7 @@ const std::vector<std::reference_wrapper<const ModelDescriptor>>& modelCatalog()
 }
 
 void registerModel(const ModelDescriptor& descriptor) {
-    if (descriptor.kind.empty() || descriptor.units.name.empty() || descriptor.units.time.empty() ||
-        !(descriptor.watchableRate > 0) || !descriptor.specs || !descriptor.create ||
-        !descriptor.particleCount)
-        throw std::invalid_argument(
-            "a model kind needs a name, its units and unit of time, a watchable rate, parameter specs, a "
-            "creator and a particle count");
+    requireComplete(descriptor);
     if (findModel(descriptor.kind))
         throw std::invalid_argument("the model kind '" + descriptor.kind + "' is registered already");
     registeredKinds().push_back(descriptor);

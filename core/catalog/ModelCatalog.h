@@ -14,6 +14,9 @@
 
 namespace pl {
 
+// The built-in kinds' registrations in menu order: RegisteredKinds.cpp, which core/CMakeLists.txt generates
+// from the kind.cmake of each kind's folder (docs/architecture.md, "Adding a model kind").
+std::vector<std::reference_wrapper<const ModelDescriptor>> builtInKinds();
 // Every registered kind, in menu order.
 const std::vector<std::reference_wrapper<const ModelDescriptor>>& modelCatalog();
 // Adds a kind from outside this library after the built-in ones (the test tree's ballistic kind, which

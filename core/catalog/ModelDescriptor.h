@@ -92,6 +92,10 @@ struct PresentSpec {
     double (*gravityMaximum)(const ParamValues& values) = nullptr;
 };
 
+struct StateArrayNames {
+    std::string x{}, y{}, id{};
+};
+
 struct ModelDescriptor {
     std::string kind;  // "gas": presets' "model", resources/presets/<kind>/, the CLI's scene names
     std::string title; // "Gas (molecular dynamics)"
@@ -118,6 +122,13 @@ struct ModelDescriptor {
     // proportional). nullptr: the kind has none to offer. The app offers it in the status bar and the
     // teacher decides; the new values take effect at a reset.
     ParamValues (*lighter)(const ParamValues& values, double share) = nullptr;
+    // The preset the model contract (tests/core/tst_model_contract.cpp) starts from, by name: one of the
+    // kind's built-in presets, its teaching scene. Empty: the kind's defaults (a kind without presets).
+    std::string contractPreset{};
+    // The snapshot arrays that hold each particle's position, and its identity where the model reorders
+    // its arrays (a spatial sort; empty: the arrays keep the particles' order). The contract matches the
+    // particles of a run with time reversed to those of its start through them.
+    StateArrayNames stateArrays{};
 };
 
 // lighter() for a kind whose work per step follows its particle counts: each named count × share, at

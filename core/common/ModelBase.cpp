@@ -48,6 +48,10 @@ void requireRoomOutside(const Area& area, const std::vector<Obstacle>& obstacles
                       "them smaller or fewer");
 }
 
+void refuseObstacles(const std::string& kind, const std::vector<Obstacle>& obstacles) {
+    if (!obstacles.empty()) throw PresetError("obstacles", "the " + kind + " scene has no obstacles");
+}
+
 void refuseMissingPiston(const std::string& why) {
     throw std::logic_error(why);
 }

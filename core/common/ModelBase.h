@@ -35,6 +35,8 @@ void requireCentresInside(const Area& area, const std::vector<Obstacle>& obstacl
 // could be placed or enter: judged on a kRoomProbes × kRoomProbes grid of points, one at each grid
 // cell's centre, of which at least one must lie outside every obstacle.
 void requireRoomOutside(const Area& area, const std::vector<Obstacle>& obstacles);
+// Throws PresetError ("obstacles") when there are any: the scene `kind` has none.
+void refuseObstacles(const std::string& kind, const std::vector<Obstacle>& obstacles);
 // Throws std::logic_error: the scene has no piston (or it is switched off).
 [[noreturn]] void refuseMissingPiston(const std::string& why);
 // v → √factor v for every particle: kinetic energy × factor. Throws std::invalid_argument unless
@@ -112,6 +114,7 @@ public:
     void step() final {
         if (failure_) return;
         const double h = signedStep();
+        if (h != segmentStepSize_) startClockSegment(h);
         stepThreads_.beginStep(backend() == "cpu");
         try {
             advance(h);
@@ -122,7 +125,7 @@ public:
         stepThreads_.endStep();
         if (failure_) return;
         ++step_;
-        time_ += h;
+        time_ = segmentTime_ + static_cast<double>(step_ - segmentStep_) * h;
         afterStep();
     }
     std::int64_t stepCount() const final { return step_; }
@@ -143,8 +146,11 @@ protected:
     virtual void refuseParams(const Params& /*next*/) const {}
     // After params_ became the new values (before: the old ones): what they change in the state.
     virtual void paramsChanged(const Params& /*before*/) {}
-    // A preset's obstacles against its parameters; throw PresetError naming the entry.
-    virtual void checkObstacles(const Params& /*next*/, const std::vector<Obstacle>& /*obstacles*/) const {}
+    // A preset's obstacles against its parameters; throw PresetError naming the entry. A kind without
+    // tools has no obstacles, so the base refuses any; SceneModelBase checks them against its area.
+    virtual void checkObstacles(const Params& /*next*/, const std::vector<Obstacle>& obstacles) const {
+        model_base::refuseObstacles(kind(), obstacles);
+    }
     // A preset's refusals that its parameters and seed decide, before reset() builds the state (a state
     // of 1e7 particles takes seconds and gigabytes to build); throw PresetError naming the entry.
     virtual void refuseBeforeBuilding(const Params& /*next*/, std::uint64_t /*seed*/) const {}
@@ -171,16 +177,34 @@ protected:
     void restartClock() {
         step_ = 0;
         time_ = 0.0;
+        segmentStepSize_ = kNoSegment;
         failure_.reset();
     }
-    // Snapshots: the clock goes with every model's state (core/common/Snapshot.h).
+    // Snapshots: the clock goes with every model's state (core/common/Snapshot.h), with its segment, so a
+    // run continued from a snapshot reads the same times as one never stopped. An older snapshot, without
+    // the segment, starts one at its time.
     void saveClock(StateRecord& record) const {
         record.put("step", static_cast<double>(step_));
         record.put("time", time_);
+        if (segmentStepSize_ == kNoSegment) return;
+        record.put("segment_step", static_cast<double>(segmentStep_));
+        record.put("segment_time", segmentTime_);
+        record.put("segment_step_size", segmentStepSize_);
     }
     void restoreClock(const StateRecord& record) {
         step_ = record.count("step"); // a whole number from 0 to 2⁵³, refused otherwise
         time_ = record.scalar("time");
+        segmentStepSize_ = kNoSegment;
+        if (record.has("segment_step_size")) {
+            const std::int64_t first = record.count("segment_step");
+            if (first > step_)
+                throw PresetError(
+                    "state.segment_step",
+                    "the clock's segment cannot start after the step the snapshot was taken at");
+            segmentStep_ = first;
+            segmentTime_ = record.scalar("segment_time");
+            segmentStepSize_ = record.scalar("segment_step_size");
+        }
         failure_.reset();
     }
 
@@ -189,8 +213,20 @@ protected:
     std::vector<Obstacle> obstacles_;
 
 private:
+    // The clock counts steps and derives the time from the count, t = t₀ + (n − n₀) h, within a segment of
+    // constant h (dt and the direction of time), as LAMMPS keeps atime and atimestep: a running sum
+    // t += h drifts (t = 4.9999999999999902 at step 100 at dt = 0.05) where this gives t = 5.
+    static constexpr double kNoSegment = 0.0; // no step taken since the clock (re)started
+    void startClockSegment(double h) {
+        segmentStep_ = step_;
+        segmentTime_ = time_;
+        segmentStepSize_ = h;
+    }
+
     std::int64_t step_ = 0;
     double time_ = 0.0;
+    std::int64_t segmentStep_ = 0;
+    double segmentTime_ = 0.0, segmentStepSize_ = kNoSegment;
     std::optional<ModelFailure> failure_;
     int timeDirection_ = 1;
     StepThreads stepThreads_;

@@ -48,10 +48,6 @@ void DsmcModel::paramsChanged(const DsmcParams& /*before*/) {
     collisions_ = CollisionModel::fromParams(params_);
 }
 
-void DsmcModel::checkObstacles(const DsmcParams& /*next*/, const std::vector<Obstacle>& obstacles) const {
-    if (!obstacles.empty()) throw PresetError("obstacles", "a DSMC cell has no obstacles");
-}
-
 void DsmcModel::checkBuiltState() const {
     // ν Δt needs the built state's (σ c_r)_max; a refused preset leaves the model as it was.
     if (const std::string why = nuDtRefusal(params_); !why.empty())

@@ -60,7 +60,6 @@ private:
     // ModelBase's hooks: ν Δt bounds the parameters and presets (refused above kRefusedNuDt).
     void refuseParams(const DsmcParams& next) const override;
     void paramsChanged(const DsmcParams& before) override;
-    void checkObstacles(const DsmcParams& next, const std::vector<Obstacle>& obstacles) const override;
     void refuseBeforeBuilding(const DsmcParams& next, std::uint64_t seed) const override;
     void checkBuiltState() const override;
 

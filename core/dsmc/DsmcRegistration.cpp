@@ -50,6 +50,8 @@ const ModelDescriptor& dsmcRegistration() {
             [](const ParamValues& values, double share) {
                 return fewerParticles(values, share, {"count_a", "count_b"});
             },
+
+        .contractPreset = "dsmc-bkw",
     };
     return descriptor;
 }

@@ -63,6 +63,9 @@ const ModelDescriptor& fluidRegistration() {
                                  LessonControl::SpawnTool},
                     // Twice the write-up's g.
                     .gravityMaximum = [](const ParamValues&) { return 2 * 9.8; }},
+
+        .contractPreset = "fluid-dam-break",
+        .stateArrays = {.x = "x", .y = "y"},
     };
     return descriptor;
 }

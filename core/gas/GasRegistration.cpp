@@ -58,6 +58,9 @@ const ModelDescriptor& gasRegistration() {
             [](const ParamValues& values, double share) {
                 return fewerParticles(values, share, {"count_a", "count_b"});
             },
+
+        .contractPreset = "gas-classroom",
+        .stateArrays = {.x = "x", .y = "y", .id = "id"},
     };
     return descriptor;
 }

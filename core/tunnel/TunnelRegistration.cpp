@@ -53,6 +53,9 @@ const ModelDescriptor& tunnelRegistration() {
                     lighter["fn"] = std::get<double>(fn->second) / share;
                 return lighter;
             },
+
+        .contractPreset = "tunnel-couette",
+        .stateArrays = {.x = "x", .y = "y"},
     };
     return descriptor;
 }

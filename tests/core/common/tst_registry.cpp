@@ -143,6 +143,22 @@ private slots:
         QCOMPARE(listed, builtinPresets().size());
     }
 
+    // The preset the model contract starts from is one of the kind's own built-in presets, and the arrays
+    // the registration names are in its snapshots (docs/architecture.md, "Adding a model kind").
+    void contractPresetAndStateArraysAreTheKinds() {
+        for (const ModelDescriptor& d : modelCatalog()) {
+            QVERIFY2(!d.contractPreset.empty(), d.kind.c_str());
+            const auto presets = builtinPresetsOf(d.kind);
+            QVERIFY2(std::any_of(presets.begin(), presets.end(),
+                                 [&](const BuiltinPreset* p) { return p->name == d.contractPreset; }),
+                     (d.kind + ": " + d.contractPreset).c_str());
+            const Snapshot snapshot = takeSnapshot(*instantiate(loadPreset(d.contractPreset)));
+            for (const std::string& name : {d.stateArrays.x, d.stateArrays.y, d.stateArrays.id})
+                if (!name.empty())
+                    QVERIFY2(snapshot.state.arrays.count(name), (d.kind + ": " + name).c_str());
+        }
+    }
+
     // A new experiment starts from defaultPreset(): the model a plain create() gives.
     void defaultPresetIsTheDefaultModel() {
         for (const ModelDescriptor& d : modelCatalog()) {

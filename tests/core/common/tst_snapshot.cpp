@@ -100,6 +100,18 @@ private slots:
         }
         for (const ModelDescriptor& d : modelCatalog())
             QVERIFY2(kinds.count(d.kind) == 1, ("no earlier snapshot of kind " + d.kind).c_str());
+        // Each pair has its recipe, from which tests/data/record.sh writes a new kind's pair.
+        std::ifstream recipes(folder / "recipes.txt");
+        QVERIFY(recipes);
+        std::set<std::string> recipeStems;
+        for (std::string line; std::getline(recipes, line);)
+            if (!line.empty() && line[0] != '#') recipeStems.insert(line.substr(0, line.find(' ')));
+        for (const auto& entry : std::filesystem::directory_iterator(folder)) {
+            const std::string file = entry.path().filename().string();
+            const std::string::size_type at = file.find(".snapshot.json");
+            if (at != std::string::npos)
+                QVERIFY2(recipeStems.count(file.substr(0, at)), ("no recipe for " + file).c_str());
+        }
     }
 
     void brokenSnapshotsAreRefusedNamingTheEntry() {

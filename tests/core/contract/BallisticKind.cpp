@@ -1,7 +1,9 @@
 // The ballistic test kind: its parameter table, state table, physics, series and registration.
 #include "BallisticKind.h"
 
+#include "common/MemoryBudget.h"
 #include "common/Philox.h"
+#include "common/StopRequest.h"
 
 #include <cmath>
 #include <numbers>
@@ -55,6 +57,14 @@ const std::vector<ParamField<BallisticParams>>& BallisticParams::fields() {
     return list;
 }
 
+void BallisticParams::validate() const {
+    constexpr double kBytesPerPoint = 4 * sizeof(double); // x, y, vx, vy
+    requireMemory({static_cast<double>(count) * kBytesPerPoint, "count", [](double fitting) {
+                       return "use {count} ≤ " +
+                              std::to_string(static_cast<long long>(fitting / kBytesPerPoint));
+                   }});
+}
+
 const std::vector<ParamSpec>& BallisticParams::describe() {
     static const std::vector<ParamSpec> list = specsOf(fields());
     return list;
@@ -97,6 +107,7 @@ void BallisticModel::reset() {
 }
 
 void BallisticModel::advance(double h) {
+    leaveIfAbandoning(); // a stop request ends the step before it changed anything (common/StopRequest.h)
     advanceObstacles(h);
     const double kick = -0.5 * params_.gravity * h; // half a step of gravity on v_y
     const Area a = toolArea();
@@ -211,7 +222,9 @@ const ModelDescriptor& ballisticRegistration() {
                    {}}},
         .distributions = {},
         .watchableRate = 1.0,
-        .present = {}, // nothing of its own: present mode builds the board from what the kind offers
+        .present = {},        // nothing of its own: present mode builds the board from what the kind offers
+        .contractPreset = {}, // no built-in presets: the contract starts from the defaults
+        .stateArrays = {.x = "x", .y = "y"},
     };
     return descriptor;
 }
