@@ -10,6 +10,7 @@
 #include "common/SnapshotJson.h"
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <optional>
 #include <stdexcept>
@@ -97,6 +98,17 @@ Preset defaultPreset(const ModelDescriptor& descriptor) {
     preset.model = descriptor.kind;
     for (const ParamSpec& spec : *descriptor.specs) preset.params[spec.key] = spec.defaultValue;
     return preset;
+}
+
+NumberFormat readoutFormat(const PresentReadout& readout, double value) {
+    constexpr double kPlainBelow = 1e6, kPlainFrom = 1e-4;
+    const double size = std::abs(value);
+    if (readout.format == 'f' || !std::isfinite(value) || size == 0)
+        return {readout.format, readout.precision};
+    if (size >= kPlainBelow || size < kPlainFrom) return {'g', readout.precision};
+    // 'g' writes an exponent from 10^precision on: there the whole number says as much, without one.
+    if (size >= std::pow(10.0, readout.precision)) return {'f', 0};
+    return {'g', readout.precision};
 }
 
 ParamValues fewerParticles(const ParamValues& values, double share, const std::vector<std::string>& counts) {

@@ -67,10 +67,19 @@ struct PresentReadout {
     bool needsBodies = false;
 };
 
+// How a readout writes a value: plain digits from 10⁻⁴ up to a million (2000 particles read "2000", not
+// "2E+03"; a value of 10^precision or more as a whole number), an exponent beyond. The UI writes it in its
+// language's digits (QLocale::toString(value, format, precision)).
+struct NumberFormat {
+    char format = 'g';
+    int precision = 3;
+};
+NumberFormat readoutFormat(const PresentReadout& readout, double value);
+
 // The large controls a lesson can have in present mode (ui/present/LessonControls.cpp draws them).
 enum class LessonControl {
     Heat,          // held to a side it heats or cools (needs the scene's tools)
-    ParticleCount, // restarts with N particles at the temperature reached (count_a, count_b, init_kT)
+    ParticleCount, // restarts with N particles at the temperature reached (PresentSpec::particleCount)
     Piston,        // the piston switch and compress / stop / expand (piston_enabled)
     Gravity,       // a slider for `gravity` from 0 to PresentSpec::gravityMaximum
     GravitySwitch, // the `gravity_on` switch
@@ -78,6 +87,20 @@ enum class LessonControl {
     SpawnTool,     // chooses the viewport's spawn tool
     Pace,          // steps per frame, or the automatic pace
     FieldView,     // what the viewport shows: one button per `view` choice (sampled fields)
+};
+
+// What "the number of particles" and "the temperature" are in the kind's parameters: present mode's
+// particle-count control (LessonControl::ParticleCount) restarts the experiment with N particles at the
+// temperature reached, so a class compares pressures at equal temperature.
+struct ParticleCountControl {
+    // The particles the parameters start with now.
+    double (*count)(const ParamValues& values) = nullptr;
+    // The most the control offers for these parameters (the box and the cap decide).
+    double (*largest)(const ParamValues& values) = nullptr;
+    // The values that restart with `total` particles (each species keeping its share) at `temperature`.
+    ParamValues (*restartWith)(const ParamValues& values, double total, double temperature) = nullptr;
+    std::string temperatureColumn{};    // the series column of the temperature reached ("kT")
+    std::string temperatureParameter{}; // the starting temperature's parameter, the fallback ("init_kT")
 };
 
 // What present mode shows for the kind. A part left empty is built from what the kind offers
@@ -90,6 +113,8 @@ struct PresentSpec {
     // The gravity slider's top for the scene's parameters (at least twice the gravity it has); nullptr:
     // twice the scene's or the default gravity.
     double (*gravityMaximum)(const ParamValues& values) = nullptr;
+    // The particle-count control's meaning; without it the kind offers no such control.
+    ParticleCountControl particleCount{};
 };
 
 struct StateArrayNames {

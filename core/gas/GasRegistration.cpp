@@ -2,9 +2,46 @@
 #include "GasSeries.h"
 #include "catalog/ModelDescriptor.h"
 
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
 namespace pl {
 
 using namespace plot_colours;
+
+namespace {
+constexpr double kCountRange = 2.0; // the particle control reaches twice the scene's starting N
+constexpr double kMaxPacking = 0.4; // … but never past 40 % of the box covered by disks
+
+GasParams gasParams(const ParamValues& values) {
+    return withValues(GasParams{}, GasParams::fields(), values);
+}
+
+// Present mode's particle count: both species, in the box the piston leaves open at the start.
+double largestCount(const ParamValues& values) {
+    const GasParams p = gasParams(values);
+    const double total = std::max<double>(1, static_cast<double>(p.totalCount()));
+    const double meanDiscArea = std::numbers::pi / 4 *
+                                (static_cast<double>(p.a.count) * p.a.diameter * p.a.diameter +
+                                 static_cast<double>(p.b.count) * p.b.diameter * p.b.diameter) /
+                                total;
+    const double packed = kMaxPacking * p.boxWidth * p.boxHeight / meanDiscArea;
+    return std::max(total, std::min({kCountRange * total, packed, static_cast<double>(p.maxParticles)}));
+}
+
+// N disks, each species keeping its share, drawn from a Maxwell–Boltzmann distribution at kT.
+ParamValues restartWith(const ParamValues& values, double total, double kT) {
+    const GasParams p = gasParams(values);
+    const double shareA =
+        p.totalCount() > 0 ? static_cast<double>(p.a.count) / static_cast<double>(p.totalCount()) : 1.0;
+    const double a = std::round(shareA * total);
+    return {{"count_a", a},
+            {"count_b", total - a},
+            {"init_velocity", std::string("maxwell-boltzmann")},
+            {"init_kT", kT}};
+}
+} // namespace
 
 const ModelDescriptor& gasRegistration() {
     static const ModelDescriptor descriptor{
@@ -53,7 +90,15 @@ const ModelDescriptor& gasRegistration() {
                                     ? 0.5 * p.a.mass * p.initSpeed * p.initSpeed // 2D: ½ m v² = kT
                                     : p.initKT;
                             return 5.0 * kT / (p.a.mass * p.boxHeight);
-                        }},
+                        },
+                    .particleCount = {.count =
+                                          [](const ParamValues& values) {
+                                              return static_cast<double>(gasParams(values).totalCount());
+                                          },
+                                      .largest = largestCount,
+                                      .restartWith = restartWith,
+                                      .temperatureColumn = "kT",
+                                      .temperatureParameter = "init_kT"}},
         .lighter =
             [](const ParamValues& values, double share) {
                 return fewerParticles(values, share, {"count_a", "count_b"});

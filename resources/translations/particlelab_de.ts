@@ -2563,20 +2563,12 @@ Wirkt nach „Zurücksetzen“.</translation>
         <translation>Schritte pro Bild</translation>
     </message>
     <message>
-        <source>Restarted with %1 particles at kT = %2.</source>
-        <translation>Neu gestartet mit %1 Teilchen bei kT = %2.</translation>
-    </message>
-    <message>
         <source>Pause</source>
         <translation>Pause</translation>
     </message>
     <message>
         <source>◀ Cool   Heat ▶</source>
         <translation>◀ Kühlen   Heizen ▶</translation>
-    </message>
-    <message>
-        <source>Particles (restart at this kT)</source>
-        <translation>Teilchen (Neustart bei diesem kT)</translation>
     </message>
     <message>
         <source>Spawn tool</source>
@@ -2597,6 +2589,14 @@ Wirkt nach „Zurücksetzen“.</translation>
     <message>
         <source>Drag a rectangle in the scene to fill it with particles; a click adds one.</source>
         <translation>Ein Rechteck in der Szene aufziehen, um es mit Teilchen zu füllen; ein Klick fügt eines hinzu.</translation>
+    </message>
+    <message>
+        <source>Restarted with %1 particles at %2 = %3.</source>
+        <translation>Neu gestartet mit %1 Teilchen bei %2 = %3.</translation>
+    </message>
+    <message>
+        <source>Particles (restart at this %1)</source>
+        <translation>Teilchen (Neustart bei diesem %1)</translation>
     </message>
 </context>
 <context>

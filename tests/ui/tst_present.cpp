@@ -357,11 +357,16 @@ private slots:
         // Particle number: a click on the groove steps it; the scene restarts with that many disks.
         auto* count = presentChild<QSlider>(window, "lessonCount");
         QCOMPARE(count->value(), 400);
+        const double kTReached = latestKT();
         QTest::mouseClick(count, Qt::LeftButton, {}, QPoint(count->width() - 5, count->height() / 2));
         QTest::qWait(30);
         QVERIFY(count->value() > 400);
         model = controller->model();
         QCOMPARE(int(model->particleCount()), count->value());
+        // … at the temperature it had reached, as the gas's registration says (init_kT).
+        const double restartKT = std::get<double>(model->params().at("init_kT"));
+        QVERIFY2(std::abs(restartKT / kTReached - 1) < 0.1,
+                 qPrintable(QString("%1 vs %2").arg(restartKT).arg(kTReached)));
         QVERIFY(model->tools()->hasPiston()); // the restart keeps the experiment's piston
 
         // Gravity: a click on the groove sets a downward field.

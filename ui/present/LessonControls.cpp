@@ -26,8 +26,6 @@ namespace {
 constexpr int kSliderSteps = 100;
 constexpr int kPourIntervalMs = 150;   // one small block of fluid per interval while Pour is held
 constexpr double kPourFraction = 0.04; // side of the poured block, as a fraction of the tank width
-constexpr double kCountRange = 2.0;    // the particle slider reaches twice the scene's starting N
-constexpr double kMaxPacking = 0.4;    // … but never past 40 % of the box covered by disks
 constexpr int kViewColumns = 2;        // the field buttons wrap after this many
 constexpr int kColumnGap = 10;         // px between the two columns: German buttons fill 45 % of 1024 px
 
@@ -202,18 +200,17 @@ void LessonControls::addHeatSlider(QVBoxLayout* group) {
 }
 
 void LessonControls::addParticleCount(QVBoxLayout* group) {
-    // Particle number: the experiment restarts with N disks at the temperature it has now, so the class
-    // compares pressures at equal kT. Spawning could only add disks, and is refused where they overlap.
+    // Particle number: the experiment restarts with N particles at the temperature it has now, so the
+    // class compares pressures at equal temperature. Spawning could only add particles, and is refused
+    // where they overlap. What N and the temperature are is the kind's (PresentSpec::particleCount).
+    const ParticleCountControl* control = particleCountControl(*controller_->model());
+    if (!control) return;
     const ParamValues values = controller_->parameterValues();
-    const double na = number(values, "count_a", 0), nb = number(values, "count_b", 0);
-    const double total = std::max(1.0, na + nb);
-    const double da = number(values, "diameter_a", 0), db = number(values, "diameter_b", 0);
-    const double meanDiscArea = std::numbers::pi / 4 * (na * da * da + nb * db * db) / total;
-    const double area = number(values, "box_width", 1) * number(values, "box_height", 1);
-    const double packed = meanDiscArea > 0 ? kMaxPacking * area / meanDiscArea : kCountRange * total;
-    const double cap = number(values, "max_particles", kCountRange * total);
-    const int top = static_cast<int>(std::max(total, std::min({kCountRange * total, packed, cap})));
-    count_ = addSlider(group, tr("Particles (restart at this kT)"), &countLabel_);
+    const double total = std::max(1.0, control->count(values));
+    const int top = static_cast<int>(std::max(total, control->largest(values)));
+    count_ = addSlider(
+        group, tr("Particles (restart at this %1)").arg(QString::fromStdString(control->temperatureColumn)),
+        &countLabel_);
     count_->setObjectName("lessonCount");
     count_->setRange(std::max(1, top / 50), top);
     count_->setValue(static_cast<int>(total));
@@ -357,16 +354,13 @@ void LessonControls::addFieldButtons() {
 void LessonControls::applyParticleCount(int total) {
     Model* model = controller_->model();
     if (!model) return;
+    const ParticleCountControl* control = particleCountControl(*model);
+    if (!control) return;
     const ParamValues values = controller_->parameterValues(); // with a count that waits for Reset
-    const double na = number(values, "count_a", 0), nb = number(values, "count_b", 0);
-    if (static_cast<int>(na + nb) == total) return;
-    const double fractionA = na + nb > 0 ? na / (na + nb) : 1.0;
-    const double a = std::round(fractionA * total);
-    const double kT = latest(controller_, "kT", number(values, "init_kT", 0.5));
-    const QString problem = controller_->setParameters({{"count_a", a},
-                                                        {"count_b", total - a},
-                                                        {"init_velocity", std::string("maxwell-boltzmann")},
-                                                        {"init_kT", kT}});
+    if (static_cast<int>(control->count(values)) == total) return;
+    const double temperature = latest(controller_, QString::fromStdString(control->temperatureColumn),
+                                      number(values, control->temperatureParameter, 0.0));
+    const QString problem = controller_->setParameters(control->restartWith(values, total, temperature));
     if (!problem.isEmpty()) {
         say(problem);
         return;
@@ -374,7 +368,10 @@ void LessonControls::applyParticleCount(int total) {
     const bool wasRunning = controller_->isRunning();
     controller_->reset();
     if (wasRunning) controller_->play();
-    say(tr("Restarted with %1 particles at kT = %2.").arg(total).arg(kT, 0, 'g', 3));
+    say(tr("Restarted with %1 particles at %2 = %3.")
+            .arg(total)
+            .arg(QString::fromStdString(control->temperatureColumn))
+            .arg(temperature, 0, 'g', 3));
 }
 
 void LessonControls::pourOnce() {

@@ -58,6 +58,7 @@ std::vector<LessonControl> lessonControls(Model& model) {
     std::vector<LessonControl> out;
     const bool tools = model.tools() != nullptr;
     if (tools) out.push_back(LessonControl::Heat);
+    if (particleCountControl(model)) out.push_back(LessonControl::ParticleCount);
     if (hasParameter(model, "gravity", ParamKind::Real)) out.push_back(LessonControl::Gravity);
     if (hasParameter(model, "gravity_on", ParamKind::Boolean)) out.push_back(LessonControl::GravitySwitch);
     if (tools && hasParameter(model, "piston_enabled", ParamKind::Boolean))
@@ -82,6 +83,13 @@ double gravityMaximum(const Model& model) {
         if (fallback <= 0) fallback = gravity->max;
     }
     return fallback > 0 ? fallback : 1.0;
+}
+
+const ParticleCountControl* particleCountControl(const Model& model) {
+    const PresentSpec* spec = specOf(model);
+    if (!spec) return nullptr;
+    const ParticleCountControl& control = spec->particleCount;
+    return control.count && control.largest && control.restartWith ? &control : nullptr;
 }
 
 } // namespace pl::ui

@@ -22,5 +22,7 @@ std::string presentPlot(const Model& model);
 std::vector<LessonControl> lessonControls(Model& model);
 // The top of the gravity slider for the model's current parameters.
 double gravityMaximum(const Model& model);
+// What the particle-count control means for the model's kind, or nullptr where it has none.
+const ParticleCountControl* particleCountControl(const Model& model);
 
 } // namespace pl::ui

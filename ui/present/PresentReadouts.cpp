@@ -143,7 +143,11 @@ QString PresentReadouts::valueText(const ReadoutSpec& spec, int column) const {
     // In the UI's language (German 0,474), without group separators, as the plots write numbers.
     QLocale locale;
     locale.setNumberOptions(QLocale::OmitGroupSeparator);
-    const QString number = locale.toString(v, spec.format, spec.precision);
+    PresentReadout readout;
+    readout.format = spec.format;
+    readout.precision = spec.precision;
+    const NumberFormat format = readoutFormat(readout, v); // plain digits up to a million
+    const QString number = locale.toString(v, format.format, format.precision);
     return spec.unit.isEmpty() ? number : QStringLiteral("%1 %2").arg(number, spec.unit);
 }
 

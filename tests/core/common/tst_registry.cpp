@@ -6,6 +6,7 @@
 
 #include <QtTest>
 #include <algorithm>
+#include <cstdio>
 #include <set>
 
 using namespace pl;
@@ -141,6 +142,33 @@ private slots:
             listed += builtinPresetsOf(d.kind).size();
         }
         QCOMPARE(listed, builtinPresets().size());
+    }
+
+    // Present mode's numbers: plain digits up to a million (the ballistic board read "2E+03" particles
+    // and an energy of "1.03E+03 M·L²/T²"), an exponent beyond, a fixed format as declared.
+    void readoutsWritePlainNumbersUpToAMillion() {
+        const auto written = [](double value, char format = 'g', int precision = 3) {
+            PresentReadout readout;
+            readout.format = format;
+            readout.precision = precision;
+            const NumberFormat f = readoutFormat(readout, value);
+            char text[64];
+            if (f.format == 'f')
+                std::snprintf(text, sizeof text, "%.*f", f.precision, value);
+            else
+                std::snprintf(text, sizeof text, "%.*g", f.precision, value);
+            return std::string(text);
+        };
+        QCOMPARE(written(2000), std::string("2000"));
+        QCOMPARE(written(1031.7), std::string("1032"));
+        QCOMPARE(written(999999), std::string("999999"));
+        QCOMPARE(written(0.474), std::string("0.474"));
+        QCOMPARE(written(12.345), std::string("12.3"));
+        QCOMPARE(written(0.000123), std::string("0.000123"));
+        QCOMPARE(written(2.5e7), std::string("2.5e+07"));
+        QCOMPARE(written(3e-7), std::string("3e-07"));
+        QCOMPARE(written(-4500), std::string("-4500"));
+        QCOMPARE(written(3.14159, 'f', 2), std::string("3.14"));
     }
 
     // The preset the model contract starts from is one of the kind's own built-in presets, and the arrays
