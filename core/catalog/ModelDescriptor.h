@@ -7,6 +7,7 @@
 #include "common/Model.h"
 #include "common/Preset.h"
 #include "common/SeriesTable.h"
+#include "common/TheoryRows.h"
 
 #include <cstddef>
 #include <memory>
@@ -154,6 +155,10 @@ struct ModelDescriptor {
     // its arrays (a spatial sort; empty: the arrays keep the particles' order). The contract matches the
     // particles of a run with time reversed to those of its start through them.
     StateArrayNames stateArrays{};
+    // The key readouts at the end of a run beside their theory, with verdicts (common/TheoryRows.h), for a
+    // model of the kind and the series its run sampled: the lab report's "Readouts against theory" and a
+    // lesson's checks read the same rows. nullptr: no theory applies.
+    std::vector<TheoryRow> (*theoryRows)(const Model& model, const TimeSeries& series) = nullptr;
 };
 
 // lighter() for a kind whose work per step follows its particle counts: each named count × share, at

@@ -4,6 +4,8 @@
 
 namespace pl {
 
+std::vector<TheoryRow> dsmcTheoryRows(const Model& model, const TimeSeries& series); // DsmcTheoryRows.cpp
+
 using namespace plot_colours;
 
 const ModelDescriptor& dsmcRegistration() {
@@ -52,6 +54,8 @@ const ModelDescriptor& dsmcRegistration() {
             },
 
         .contractPreset = "dsmc-bkw",
+
+        .theoryRows = dsmcTheoryRows,
     };
     return descriptor;
 }

@@ -4,4 +4,4 @@ set(KIND_ORDER 2)
 set(KIND_REGISTRATION dsmcRegistration)
 set(KIND_SOURCES
   DsmcCollisionModel.cpp DsmcInitialState.cpp DsmcModel.cpp DsmcObservables.cpp DsmcParams.cpp
-  DsmcRegistration.cpp MolecularParams.cpp DsmcSnapshot.cpp DsmcSweep.cpp DsmcTheory.cpp)
+  DsmcRegistration.cpp DsmcTheoryRows.cpp MolecularParams.cpp DsmcSnapshot.cpp DsmcSweep.cpp DsmcTheory.cpp)

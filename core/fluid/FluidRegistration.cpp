@@ -5,6 +5,8 @@
 
 namespace pl {
 
+std::vector<TheoryRow> fluidTheoryRows(const Model& model, const TimeSeries& series); // FluidTheoryRows.cpp
+
 using namespace plot_colours;
 
 namespace {
@@ -66,6 +68,8 @@ const ModelDescriptor& fluidRegistration() {
 
         .contractPreset = "fluid-dam-break",
         .stateArrays = {.x = "x", .y = "y"},
+
+        .theoryRows = fluidTheoryRows,
     };
     return descriptor;
 }

@@ -8,6 +8,8 @@
 
 namespace pl {
 
+std::vector<TheoryRow> gasTheoryRows(const Model& model, const TimeSeries& series); // GasTheoryRows.cpp
+
 using namespace plot_colours;
 
 namespace {
@@ -106,6 +108,8 @@ const ModelDescriptor& gasRegistration() {
 
         .contractPreset = "gas-classroom",
         .stateArrays = {.x = "x", .y = "y", .id = "id"},
+
+        .theoryRows = gasTheoryRows,
     };
     return descriptor;
 }

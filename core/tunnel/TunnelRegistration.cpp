@@ -4,6 +4,8 @@
 
 namespace pl {
 
+std::vector<TheoryRow> tunnelTheoryRows(const Model& model, const TimeSeries& series); // TunnelTheoryRows.cpp
+
 using namespace plot_colours;
 
 const ModelDescriptor& tunnelRegistration() {
@@ -56,6 +58,8 @@ const ModelDescriptor& tunnelRegistration() {
 
         .contractPreset = "tunnel-couette",
         .stateArrays = {.x = "x", .y = "y"},
+
+        .theoryRows = tunnelTheoryRows,
     };
     return descriptor;
 }

@@ -4,5 +4,5 @@ set(KIND_ORDER 4)
 set(KIND_REGISTRATION tunnelRegistration)
 set(KIND_SOURCES
   TunnelCollide.cpp TunnelInflow.cpp TunnelModel.cpp TunnelMove.cpp TunnelObservables.cpp TunnelParams.cpp
-  TunnelRegistration.cpp TunnelSampler.cpp TunnelSamplerState.cpp TunnelSnapshot.cpp TunnelStepUndo.cpp
+  TunnelRegistration.cpp TunnelTheoryRows.cpp TunnelSampler.cpp TunnelSamplerState.cpp TunnelSnapshot.cpp TunnelStepUndo.cpp
   TunnelTheory.cpp)

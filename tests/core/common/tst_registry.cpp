@@ -144,6 +144,28 @@ private slots:
         QCOMPARE(listed, builtinPresets().size());
     }
 
+    // The report's theory rows are computed in core by the kind, with the verdict as data for a lesson's
+    // check: the dam break's front stays below Ritter's bound.
+    void theoryRowsCarryTheirVerdicts() {
+        const ModelDescriptor& fluid = *findModel("fluid");
+        QVERIFY(fluid.theoryRows);
+        auto model = instantiate(loadPreset("fluid-dam-break"));
+        TimeSeries series(model->seriesColumns());
+        series.append(model->sampleSeries());
+        for (int s = 1; s <= 100; ++s) {
+            model->step();
+            if (s % 10 == 0) series.append(model->sampleSeries());
+        }
+        const std::vector<TheoryRow> rows = fluid.theoryRows(*model, series);
+        const auto front = std::find_if(rows.begin(), rows.end(), [](const TheoryRow& row) {
+            return row.name.rfind("Surge front", 0) == 0;
+        });
+        QVERIFY(front != rows.end());
+        QVERIFY(front->agrees.has_value() && *front->agrees);
+        QVERIFY2(front->note.find("Ritter's shallow-water bound") != std::string::npos, front->note.c_str());
+        for (const ModelDescriptor& d : modelCatalog()) QVERIFY2(d.theoryRows, d.kind.c_str());
+    }
+
     // Present mode's numbers: plain digits up to a million (the ballistic board read "2E+03" particles
     // and an energy of "1.03E+03 M·L²/T²"), an exponent beyond, a fixed format as declared.
     void readoutsWritePlainNumbersUpToAMillion() {
