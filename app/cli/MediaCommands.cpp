@@ -47,23 +47,6 @@ constexpr double kReportWatchedSeconds = 4.0;
 constexpr long long kReportFewestSteps = 1000;
 constexpr long long kReportSamples = 400; // rows of the report's plots over the run
 
-// Why the options cannot make a clip, in one sentence; empty when they can.
-std::string optionsRefusal(const RecordOptions& options, ui::ClipFormat& format, int& width, int& height,
-                           long long& frames) {
-    const auto clip = ui::clipFormatOf(options.out);
-    if (!clip) return "--out '" + options.out + "' needs the suffix of a clip format: .mp4, .webm or .gif";
-    format = *clip;
-    if (!ui::parseClipSize(options.size, width, height))
-        return "--size '" + options.size + "' is not a size such as 1280x720 (width x height in pixels)";
-    if (std::string refusal = ui::clipSizeRefusal(format, width, height); !refusal.empty()) return refusal;
-    const double exact = options.seconds * options.fps;
-    frames = std::llround(exact);
-    if (frames < 1) return "the clip would have no frame: --seconds × --fps is below one";
-    if (std::abs(exact - static_cast<double>(frames)) > 1e-6)
-        return "--seconds × --fps must be a whole number of frames (it is " + std::to_string(exact) + ")";
-    return {};
-}
-
 std::string timeUnitOf(const std::string& kind) {
     if (const ModelDescriptor* model = findModel(kind))
         for (const SeriesColumn& column : model->series)
@@ -173,10 +156,10 @@ int dataFolderRefusal(const std::string& dataDir) {
 int recordClip(const RecordOptions& options) {
     StopSignals stop("particlelab-cli"); // a signal from here on ends the set-up at once, saying so
     setThreads(options.threads);
-    ui::ClipFormat format{};
+    ClipFormat format{};
     int width = 0, height = 0;
     long long frames = 0;
-    if (const std::string refusal = optionsRefusal(options, format, width, height, frames);
+    if (const std::string refusal = recordOptionsRefusal(options, format, width, height, frames);
         !refusal.empty()) {
         std::cerr << "particlelab-cli: " << refusal << "\n";
         return kBadInput;

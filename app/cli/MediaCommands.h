@@ -2,6 +2,8 @@
 // both drawn without a display (Qt's offscreen platform).
 #pragma once
 
+#include "media/ClipFormat.h"
+
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -24,6 +26,11 @@ struct RecordOptions {
     std::string backend = "auto";
     bool quiet = false;
 };
+
+// Why the options cannot make a clip, in one sentence (empty when they can), and the clip's format, size
+// and frame count (RecordOptions.cpp).
+std::string recordOptionsRefusal(const RecordOptions& options, ClipFormat& format, int& width, int& height,
+                                 long long& frames);
 
 // Frames: the state before the first step, then after every stepsPerFrame steps, seconds × fps of them.
 // A signal, a model that fails or a file that cannot take more ends the clip where it is, finished.

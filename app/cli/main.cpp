@@ -286,6 +286,16 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("record")) return recordClip(record);
     if (app.got_subcommand("report")) return writeReport(report);
 #else
+    if (app.got_subcommand("record")) { // a clip that cannot be made is refused before Qt starts
+        pl::ClipFormat format{};
+        int width = 0, height = 0;
+        long long frames = 0;
+        if (const std::string refusal = pl::cli::recordOptionsRefusal(record, format, width, height, frames);
+            !refusal.empty()) {
+            std::cerr << "particlelab-cli: " << refusal << "\n";
+            return kBadInput;
+        }
+    }
     if (app.got_subcommand("record") || app.got_subcommand("report")) return execMediaProgram(argv);
 #endif
 #endif

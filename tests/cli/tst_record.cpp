@@ -619,6 +619,26 @@ private slots:
         QVERIFY(!QFileInfo::exists(dir.filePath(out)));
     }
 
+    // The clip's format, size and frames are checked by particlelab-cli itself (core/media/ClipFormat.h),
+    // before it starts the media program: a copy of it alone, without particlelab-cli-media beside it,
+    // still refuses a bad clip in its sentence, and says what is missing only for a good one.
+    void badClipsAreRefusedWithoutTheMediaProgram() {
+        QTemporaryDir dir;
+        const QString alone = dir.filePath("particlelab-cli");
+        QVERIFY(QFile::copy(PARTICLELAB_CLI, alone));
+        const auto refused = pl::test::runProgram(alone, recordArgs(dir.filePath("clip.avi"), 1.0));
+        QCOMPARE(refused.exitCode, 2);
+        QVERIFY2(refused.err.contains("needs the suffix of a clip format"), qPrintable(refused.err));
+        const auto odd =
+            pl::test::runProgram(alone, recordArgs(dir.filePath("clip.mp4"), 1.0, {"--size", "1281x720"}));
+        QCOMPARE(odd.exitCode, 2);
+        QVERIFY2(odd.err.contains("odd side"), qPrintable(odd.err));
+        if (QFileInfo::exists(PARTICLELAB_MEDIA_PROGRAM_INSTALLED)) return; // installed: the copy finds it
+        const auto good = pl::test::runProgram(alone, recordArgs(dir.filePath("clip.mp4"), 1.0));
+        QCOMPARE(good.exitCode, 2);
+        QVERIFY2(good.err.contains("particlelab-cli-media"), qPrintable(good.err));
+    }
+
     void anInputIsNeverTheOutput() {
         QTemporaryDir dir;
         const QString preset = dir.filePath("mine.gif"); // a preset file, oddly named

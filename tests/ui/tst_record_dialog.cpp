@@ -87,10 +87,10 @@ private slots:
         QCOMPARE(ui::watchableStepsPerFrame(1e-4, 2e-7, 30), 17);
         QCOMPARE(ui::watchableStepsPerFrame(1.0, 10.0, 30), 1); // never fewer than one
         QCOMPARE(ui::watchableStepsPerFrame(0.0, 0.005, 30), ui::kAppStepsPerClipFrame); // no pace known
-        QCOMPARE(ui::clipPathFor("/tmp/a", ui::ClipFormat::Gif), QString("/tmp/a.gif"));
-        QCOMPARE(ui::clipPathFor("/tmp/a.webm", ui::ClipFormat::Mp4),
+        QCOMPARE(ui::clipPathFor("/tmp/a", ClipFormat::Gif), QString("/tmp/a.gif"));
+        QCOMPARE(ui::clipPathFor("/tmp/a.webm", ClipFormat::Mp4),
                  QString("/tmp/a.webm")); // the file decides
-        QCOMPARE(ui::clipPathFor("/tmp/a.v1", ui::ClipFormat::Mp4), QString("/tmp/a.v1.mp4"));
+        QCOMPARE(ui::clipPathFor("/tmp/a.v1", ClipFormat::Mp4), QString("/tmp/a.v1.mp4"));
     }
 
     void defaultsAre720pAt30FramesAndTheWatchablePace() {
@@ -103,7 +103,7 @@ private slots:
         QCOMPARE(o.stepsPerFrame, watchable(30));
         QVERIFY(o.captions);
         QVERIFY(o.plot.isEmpty());
-        QCOMPARE(dialog.format(), ui::ClipFormat::Mp4);
+        QCOMPARE(dialog.format(), ClipFormat::Mp4);
         QVERIFY(!dialog.findChild<QSpinBox*>("widthSpin")->isEnabled()); // a preset's size
         const QString pace = dialog.findChild<QLabel*>("paceLabel")->text();
         QVERIFY2(pace.contains(" T of simulated time per frame"), qPrintable(pace));
@@ -147,7 +147,7 @@ private slots:
         QVERIFY2(refusal->text().contains("odd side"), qPrintable(refusal->text()));
         QVERIFY(!recordButton(dialog)->isEnabled());
         choose(dialog.findChild<QComboBox*>("formatChooser"), 2); // GIF keeps every pixel's colour
-        QCOMPARE(dialog.format(), ui::ClipFormat::Gif);
+        QCOMPARE(dialog.format(), ClipFormat::Gif);
         QVERIFY(!refusal->isVisible());
         QVERIFY(recordButton(dialog)->isEnabled());
         QCOMPARE(dialog.options().size, QSize(1281, dialog.findChild<QSpinBox*>("heightSpin")->value()));
@@ -169,7 +169,7 @@ private slots:
             QCOMPARE(dialog.result(), int(QDialog::Accepted));
         }
         ui::RecordDialog again(&controller_);
-        QCOMPARE(again.format(), ui::ClipFormat::WebM);
+        QCOMPARE(again.format(), ClipFormat::WebM);
         const ui::AppClipOptions o = again.options();
         QCOMPARE(o.plot, QString("energyPlot"));
         QCOMPARE(o.size, QSize(1920, 1080));

@@ -6,7 +6,7 @@
 #pragma once
 
 #include "AppRecorder.h"
-#include "ClipFormat.h"
+#include "media/ClipFormat.h"
 
 #include <QDialog>
 

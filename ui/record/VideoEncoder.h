@@ -6,7 +6,7 @@
 // so a process killed outright leaves a clip that decodes without error up to about its last second.
 #pragma once
 
-#include "ClipFormat.h"
+#include "media/ClipFormat.h"
 
 #include <QImage>
 #include <QRgb>

@@ -5,7 +5,7 @@
 #include <cctype>
 #include <charconv>
 
-namespace pl::ui {
+namespace pl {
 
 std::optional<ClipFormat> clipFormatOf(const std::string& path) {
     const auto dot = path.find_last_of('.');
@@ -59,4 +59,4 @@ std::string clipSizeRefusal(ClipFormat format, int width, int height) {
     return {};
 }
 
-} // namespace pl::ui
+} // namespace pl

@@ -1,11 +1,12 @@
 // What a clip's file name and size mean before anything is encoded: the format follows the suffix, and a
-// size the format cannot take is refused in one sentence. Shared by the CLI's record and the app's Record.
+// size the format cannot take is refused in one sentence. Shared by the CLI's record, which checks its
+// options before it starts the media program, and the app's Record; no Qt, no FFmpeg.
 #pragma once
 
 #include <optional>
 #include <string>
 
-namespace pl::ui {
+namespace pl {
 
 enum class ClipFormat {
     Mp4,  // H.264 (libx264) in MP4, yuv420p: plays in browsers and presentation programs
@@ -29,4 +30,4 @@ bool parseClipSize(const std::string& text, int& width, int& height);
 // format stores chroma at half resolution), or empty when it can.
 std::string clipSizeRefusal(ClipFormat format, int width, int height);
 
-} // namespace pl::ui
+} // namespace pl
