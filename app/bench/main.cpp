@@ -72,11 +72,11 @@ std::string pointRefusal(const std::string& scene, std::size_t n) {
     try {
         const pl::Preset preset = scaledPreset(scene, n);
         if (scene == "gas")
-            pl::withValues(pl::GasParams{}, pl::GasParams::fields(), preset.params).validate();
+            pl::validateParams(pl::withValues(pl::GasParams{}, pl::GasParams::fields(), preset.params));
         else if (scene == "fluid")
-            pl::withValues(pl::FluidParams{}, pl::FluidParams::fields(), preset.params).validate();
+            pl::validateParams(pl::withValues(pl::FluidParams{}, pl::FluidParams::fields(), preset.params));
         else
-            pl::withValues(pl::TunnelParams{}, pl::TunnelParams::fields(), preset.params).validate();
+            pl::validateParams(pl::withValues(pl::TunnelParams{}, pl::TunnelParams::fields(), preset.params));
     } catch (const std::exception& e) {
         return e.what();
     }

@@ -6,6 +6,7 @@
 #pragma once
 
 #include "KinematicDrive.h"
+#include "MemoryBudget.h"
 #include "Model.h"
 #include "Obstacle.h"
 #include "ThreadGovernor.h"
@@ -45,7 +46,17 @@ void scaleVelocities(std::vector<double>& vx, std::vector<double>& vy, double fa
 void checkKineticFactor(double factor);
 } // namespace model_base
 
-// Params: the model's plain parameter struct with describe(), fields(), validate() and a dt [T].
+// A kind's parameters checked as the base checks them: validate()'s cross-field checks, then the most
+// memory the state can come to hold against what the machine can give (MemoryBudget.h). Every Params has
+// both, so a kind cannot leave the memory check out (a Params without memoryNeed() does not compile).
+// Throws ParamError naming the key.
+template <class Params> void validateParams(const Params& params) {
+    params.validate();
+    requireMemory(params.memoryNeed());
+}
+
+// Params: the model's plain parameter struct with describe(), fields(), validate(), memoryNeed() and a dt
+// [T].
 template <class Params> class ModelBase : public Model {
 public:
     const std::vector<ParamSpec>& paramSpecs() const override { return Params::describe(); }
@@ -56,7 +67,7 @@ public:
     // the change means for the state.
     void setParams(const ParamValues& values) override {
         Params next = withValues(params_, Params::fields(), values);
-        next.validate();
+        validateParams(next);
         refuseParams(next);
         pullState();
         const Params before = params_;
@@ -73,7 +84,7 @@ public:
         Params next;
         try {
             next = withValues(Params{}, Params::fields(), preset.params);
-            next.validate();
+            validateParams(next);
         } catch (const ParamError& e) {
             throw PresetError("params." + e.key(), e.what());
         }

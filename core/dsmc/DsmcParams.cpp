@@ -21,6 +21,13 @@ double DsmcParams::mass() const {
     return massAmu * kAtomicMass;
 }
 
+MemoryNeed DsmcParams::memoryNeed() const {
+    return {static_cast<double>(totalCount()) * kBytesPerParticle, "count_a", [](double fitting) {
+                return "use at most " + std::to_string(static_cast<long long>(fitting / kBytesPerParticle)) +
+                       " particles ({count_a} + {count_b})";
+            }};
+}
+
 void DsmcParams::validate() const {
     const long long n = totalCount();
     if (n < 2)
@@ -30,11 +37,6 @@ void DsmcParams::validate() const {
     if (static_cast<double>(n) > kMaxParticles)
         throw ParamError("count_a", std::to_string(n) + " particles exceed the limit of " +
                                         std::to_string(static_cast<long long>(kMaxParticles)));
-    requireMemory({static_cast<double>(n) * kBytesPerParticle, "count_a", [](double fitting) {
-                       return "use at most " +
-                              std::to_string(static_cast<long long>(fitting / kBytesPerParticle)) +
-                              " particles ({count_a} + {count_b})";
-                   }});
     if (velocityComponents != 2 && velocityComponents != 3)
         throw ParamError("velocity_components",
                          "'{velocity_components}' must be 2 (in the plane) or 3 (in space), not " +

@@ -1,6 +1,8 @@
 // Parameters of the DSMC cell (SI units: m, s, kg, K). One table drives presets, the CLI and the UI.
 #pragma once
 
+#include "common/MemoryBudget.h"
+
 #include "common/ParamSpec.h"
 #include "common/PhysicalConstants.h"
 
@@ -54,6 +56,8 @@ struct DsmcParams {
     long long totalCount() const { return initial == DsmcInitialState::TwoBeams ? countA + countB : countA; }
     // Cross-field checks; throws ParamError naming the key.
     void validate() const;
+    // The most memory the state can come to hold, which the base checks after validate() (ModelBase.h).
+    MemoryNeed memoryNeed() const;
 
     static const std::vector<ParamField<DsmcParams>>& fields();
     static const std::vector<ParamSpec>& describe();

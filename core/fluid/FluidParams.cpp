@@ -29,12 +29,14 @@ void FluidParams::validate() const {
         throw ParamError("max_particles",
                          "the initial block holds " + std::to_string(fillCount()) +
                              " particles, more than {max_particles} = " + std::to_string(maxParticles));
-    // Pouring may fill the tank up to its cap, so the cap's particles must fit.
-    requireMemory(
-        {static_cast<double>(maxParticles) * kBytesPerParticle, "max_particles", [](double fitting) {
-             return "use {max_particles} ≤ " +
-                    std::to_string(static_cast<long long>(fitting / kBytesPerParticle));
-         }});
+}
+
+// Pouring may fill the tank up to its cap, so the cap's particles must fit.
+MemoryNeed FluidParams::memoryNeed() const {
+    return {static_cast<double>(maxParticles) * kBytesPerParticle, "max_particles", [](double fitting) {
+                return "use {max_particles} ≤ " +
+                       std::to_string(static_cast<long long>(fitting / kBytesPerParticle));
+            }};
 }
 
 long long FluidParams::fillCount() const {

@@ -2,6 +2,8 @@
 // the CLI and the UI. Defaults are the write-up's (80 × 40 world, h = 1.1, ε = 100, 5 iterations, Δt = 1/20).
 #pragma once
 
+#include "common/MemoryBudget.h"
+
 #include "FluidKernels.h"
 #include "common/ParamSpec.h"
 
@@ -81,6 +83,8 @@ struct FluidParams {
     long long fillCount() const; // particles of the initial block: its spawn grid
     // Cross-field checks; throws ParamError naming the key.
     void validate() const;
+    // The most memory the state can come to hold, which the base checks after validate() (ModelBase.h).
+    MemoryNeed memoryNeed() const;
 
     static const std::vector<ParamField<FluidParams>>& fields();
     static const std::vector<ParamSpec>& describe();

@@ -220,18 +220,22 @@ const std::vector<ParamSpec>& GasParams::describe() {
     return s;
 }
 
+// Spawning may fill the gas up to its cap, so the cap's disks must fit.
+MemoryNeed GasParams::memoryNeed() const {
+    const long long n = totalCount();
+    return {static_cast<double>(maxParticles) * kBytesPerDisk, "max_particles", [n](double fitting) {
+                const auto most = static_cast<long long>(fitting / kBytesPerDisk);
+                return most >= n ? "use {max_particles} ≤ " + std::to_string(most)
+                                 : "use at most " + std::to_string(most) +
+                                       " disks ({count_a} + {count_b}, and {max_particles})";
+            }};
+}
+
 void GasParams::validate() const {
     const long long n = totalCount();
     if (n > maxParticles)
         throw ParamError("count_a", "{count_a} + {count_b} = " + std::to_string(n) +
                                         " exceeds {max_particles} = " + std::to_string(maxParticles));
-    // Spawning may fill the gas up to its cap, so the cap's disks must fit.
-    requireMemory({static_cast<double>(maxParticles) * kBytesPerDisk, "max_particles", [n](double fitting) {
-                       const auto most = static_cast<long long>(fitting / kBytesPerDisk);
-                       return most >= n ? "use {max_particles} ≤ " + std::to_string(most)
-                                        : "use at most " + std::to_string(most) +
-                                              " disks ({count_a} + {count_b}, and {max_particles})";
-                   }});
     if (pistonEnabled && !(pistonX > left() + maxDiameter() && pistonX <= 0.5 * boxWidth))
         throw ParamError("piston_x", "'{piston_x}' = " + number(pistonX) + " must lie inside the box, in (" +
                                          number(left() + maxDiameter()) + ", " + number(0.5 * boxWidth) +

@@ -1,6 +1,8 @@
 // Parameters of the soft-disk gas (reduced units: length L, mass M, time T, energy M·L²/T²).
 #pragma once
 
+#include "common/MemoryBudget.h"
+
 #include "GasIntegratorTable.h"
 #include "common/ParamSpec.h"
 
@@ -73,9 +75,11 @@ struct GasParams {
     static const std::vector<ParamField<GasParams>>& fields();
     static const std::vector<ParamSpec>& describe();
 
-    // Cross-field checks (the disks fit in the box, the cap's disks in memory (common/MemoryBudget.h), the
-    // piston lies in the box). Throws ParamError naming the key.
+    // Cross-field checks (the disks fit in the box and under the cap, the piston lies in the box). Throws
+    // ParamError naming the key.
     void validate() const;
+    // The most memory the state can come to hold, which the base checks after validate() (ModelBase.h).
+    MemoryNeed memoryNeed() const;
 };
 
 } // namespace pl

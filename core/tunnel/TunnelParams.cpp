@@ -44,17 +44,20 @@ double TunnelParams::mass() const {
     return massAmu * kAtomicMass;
 }
 
+// The grid's cells; the molecules' memory is validate()'s molecule limit (moleculeLimit()).
+MemoryNeed TunnelParams::memoryNeed() const {
+    const double cells = static_cast<double>(cellsX) * static_cast<double>(cellsY);
+    const double perCell = bytesPerCell(*this);
+    return {cells * perCell, "cells_x", [perCell](double fitting) {
+                return "use at most " + formatNumber(fitting / perCell, 3) + " cells ({cells_x} × {cells_y})";
+            }};
+}
+
 void TunnelParams::validate() const {
     if (static_cast<double>(cellsX) * static_cast<double>(cellsY) > kMaxCells)
         throw ParamError("cells_x", "{cells_x} × {cells_y} = " + std::to_string(cellsX * cellsY) +
                                         " cells exceed the limit of " +
                                         std::to_string(static_cast<long long>(kMaxCells)));
-    const double cells = static_cast<double>(cellsX) * static_cast<double>(cellsY);
-    const double perCell = bytesPerCell(*this);
-    requireMemory({cells * perCell, "cells_x", [perCell](double fitting) {
-                       return "use at most " + formatNumber(fitting / perCell, 3) +
-                              " cells ({cells_x} × {cells_y})";
-                   }});
     // The free stream filling the whole domain must fit (the count settles near it in a tunnel).
     const double fill = streamDensity * boxWidth * boxHeight / fn;
     const double limit = moleculeLimit();

@@ -3,6 +3,8 @@
 // One table drives presets, the CLI and the parameter panel.
 #pragma once
 
+#include "common/MemoryBudget.h"
+
 #include "common/ParamSpec.h"
 #include "dsmc/DsmcParams.h" // DsmcCrossSection, kBoltzmann, kAtomicMass
 
@@ -86,8 +88,10 @@ struct TunnelParams {
     double cellWidth() const { return boxWidth / double(cellsX); }
     double cellHeight() const { return boxHeight / double(cellsY); }
     // Cross-field checks (periodic sides in pairs, the piston with a left side that is not periodic, the
-    // free-stream fill within moleculeLimit(), the cells in memory); throws ParamError naming the key.
+    // free-stream fill within moleculeLimit()); throws ParamError naming the key.
     void validate() const;
+    // The most memory the state can come to hold, which the base checks after validate() (ModelBase.h).
+    MemoryNeed memoryNeed() const;
 
     static const std::vector<ParamField<TunnelParams>>& fields();
     static const std::vector<ParamSpec>& describe();

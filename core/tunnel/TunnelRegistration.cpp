@@ -22,7 +22,7 @@ const ModelDescriptor& tunnelRegistration() {
             [](const Preset& preset) {
                 const TunnelParams p = withValues(TunnelParams{}, TunnelParams::fields(), preset.params);
                 // The count's open fractions take 8 bytes a cell: the cell limit first.
-                p.validate();
+                validateParams(p);
                 return TunnelModel::initialFillCount(p, preset.obstacles);
             },
         .series = tunnelSeriesTable().columns(),

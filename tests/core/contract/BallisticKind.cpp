@@ -57,12 +57,11 @@ const std::vector<ParamField<BallisticParams>>& BallisticParams::fields() {
     return list;
 }
 
-void BallisticParams::validate() const {
+MemoryNeed BallisticParams::memoryNeed() const {
     constexpr double kBytesPerPoint = 4 * sizeof(double); // x, y, vx, vy
-    requireMemory({static_cast<double>(count) * kBytesPerPoint, "count", [](double fitting) {
-                       return "use {count} ≤ " +
-                              std::to_string(static_cast<long long>(fitting / kBytesPerPoint));
-                   }});
+    return {static_cast<double>(count) * kBytesPerPoint, "count", [](double fitting) {
+                return "use {count} ≤ " + std::to_string(static_cast<long long>(fitting / kBytesPerPoint));
+            }};
 }
 
 const std::vector<ParamSpec>& BallisticParams::describe() {

@@ -23,8 +23,9 @@ struct BallisticParams {
     double toolSpeed = 0.5; // the dragged bodies' speed limit [L/T]
     double dt = 1e-3;       // [T]
 
+    void validate() const {}
     // The points must fit in memory (common/MemoryBudget.h), as every kind's state must.
-    void validate() const;
+    MemoryNeed memoryNeed() const;
     static const std::vector<ParamField<BallisticParams>>& fields();
     static const std::vector<ParamSpec>& describe();
 };
