@@ -141,6 +141,25 @@ private slots:
         QVERIFY(!model.failure());
     }
 
+    // The test kind has what a real kind has, from its registration alone: a distribution for the speed
+    // dock and theory rows for the report and a lesson's check (its energy against its start).
+    void theTestKindHasWhatARealKindHas() {
+        const ModelDescriptor& kind = *findModel("ballistic");
+        auto model = instantiate(defaultPreset(kind));
+        TimeSeries series(model->seriesColumns());
+        series.append(model->sampleSeries());
+        for (int s = 0; s < 200; ++s) model->step();
+        series.append(model->sampleSeries());
+        const std::vector<NamedHistogram> histograms = model->histograms();
+        QCOMPARE(histograms.size(), std::size_t(1));
+        QCOMPARE(histograms[0].counts.total(), double(model->particleCount()));
+        QCOMPARE(kind.distributions, std::vector<std::string>{"speedHistogram"});
+        QVERIFY(kind.theoryRows);
+        const std::vector<TheoryRow> rows = kind.theoryRows(*model, series);
+        QCOMPARE(rows.size(), std::size_t(1));
+        QVERIFY2(rows[0].agrees.value_or(false), rows[0].note.c_str());
+    }
+
     // The clock counts steps and derives the time within a segment of constant dt and direction (issue 42):
     // a running sum read t = 4.9999999999999902 at step 100 and 200.00000000001123 at step 4000 at
     // dt = 0.05. A snapshot keeps the segment, so a continued run reads the times of one never stopped; a

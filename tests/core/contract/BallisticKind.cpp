@@ -5,6 +5,7 @@
 #include "common/Philox.h"
 #include "common/StopRequest.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <ostream>
@@ -159,6 +160,36 @@ std::vector<double> BallisticModel::sampleSeries() {
     return ballisticSeries().sample({time(), energy(), static_cast<long long>(state_.size())});
 }
 
+std::vector<NamedHistogram> BallisticModel::histograms() const {
+    constexpr std::size_t kBins = 20;
+    double fastest = 0.0;
+    std::vector<double> speeds(state_.size());
+    for (std::size_t i = 0; i < state_.size(); ++i) {
+        speeds[i] = std::hypot(state_.vx[i], state_.vy[i]);
+        fastest = std::max(fastest, speeds[i]);
+    }
+    NamedHistogram h{
+        "speed", "points", "speed [L/T]", "", Histogram(0.0, fastest > 0 ? 1.05 * fastest : 1.0, kBins), {}};
+    for (const double s : speeds) h.counts.add(s);
+    return {h};
+}
+
+// The report's row: with elastic walls and no friction the energy stays what it was; velocity Verlet is
+// exact under constant gravity between the walls, and a wall's mirror mid-step errs by O(h²) at most.
+std::vector<TheoryRow> ballisticTheoryRows(const Model& /*model*/, const TimeSeries& series) {
+    constexpr double kConserved = 1e-3; // relative
+    const SeriesColumns columns(series);
+    const double start = columns.first("energy"), end = columns.last("energy");
+    if (!std::isfinite(start) || !std::isfinite(end) || start == 0) return {};
+    const double drift = (end - start) / std::abs(start);
+    const bool conserved = std::abs(drift) <= kConserved;
+    return {
+        {"Energy at the end against its start", theoryNumber(end), "L²/T²",
+         "at the start " + theoryNumber(start) + "; drift " + theoryPercent(drift) + ": " +
+             (conserved ? "conserved, as elastic walls keep it" : "not conserved: the time step is too long"),
+         conserved}};
+}
+
 void BallisticModel::writeParticles(std::ostream& out) const {
     const auto precision = out.precision(17);
     out << "id,x,y,vx,vy\n";
@@ -219,11 +250,12 @@ const ModelDescriptor& ballisticRegistration() {
                    "Energy",
                    {"energy [L²/T²]", {{"energy", "kinetic + potential", plot_colours::kBlue}}},
                    {}}},
-        .distributions = {},
+        .distributions = {"speedHistogram"},
         .watchableRate = 1.0,
         .present = {},        // nothing of its own: present mode builds the board from what the kind offers
         .contractPreset = {}, // no built-in presets: the contract starts from the defaults
         .stateArrays = {.x = "x", .y = "y"},
+        .theoryRows = ballisticTheoryRows,
     };
     return descriptor;
 }

@@ -46,7 +46,8 @@ public:
     void restoreState(const StateRecord& record) override;
     std::vector<std::string> seriesColumns() const override;
     std::vector<double> sampleSeries() override;
-    std::vector<NamedHistogram> histograms() const override { return {}; }
+    // The points' speeds (the speedHistogram dock), no theory: they keep the speeds they started with.
+    std::vector<NamedHistogram> histograms() const override;
     void writeParticles(std::ostream& out) const override;
     SceneView sceneView() const override;
 
