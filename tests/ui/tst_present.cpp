@@ -21,6 +21,7 @@
 
 #include <QComboBox>
 #include <QDockWidget>
+#include <QLabel>
 #include <QMenuBar>
 #include <QPushButton>
 #include <QSettings>
@@ -282,6 +283,14 @@ private slots:
             QVERIFY2(height >= test::kReadableDataHeight, qPrintable(QString::number(height)));
         const QStringList readouts = panel->readouts()->texts();
         QVERIFY2(readouts.size() >= 3, qPrintable(kind + " readouts: " + readouts.join("; ")));
+        // Each number is read whole, its unit too: a value cut at its label's edge read "5.33 N" for
+        // 5.33 N/m and "299 K" with half a K (German DSMC at 1024 × 700).
+        for (const QLabel* value : panel->readouts()->findChildren<QLabel*>(QRegularExpression("^readout_")))
+            QVERIFY2(value->width() >= value->sizeHint().width(),
+                     qPrintable(QString("%1 '%2' is %3 px wide, needs %4")
+                                    .arg(value->objectName(), value->text())
+                                    .arg(value->width())
+                                    .arg(value->sizeHint().width())));
         // The forces on a body are read where the scene has one (not 0 N/m in the shock tube).
         const SceneTools* tools = window.controller()->tools();
         const bool hasBodies = tools && !tools->obstacles().empty();

@@ -77,13 +77,17 @@ void PresentReadouts::rebuild() {
 }
 
 int PresentReadouts::besideWidth() const {
+    // The grid aligns its columns: a pair's names take the widest name's room and its numbers the widest
+    // number's, even where they stand in different rows (a long name above a short number and a short
+    // name above a long one need both widths; counted as pairs, "6.34 N/m" was cut to "6.34 N").
     int width = 0;
     for (int col = 0; col < kColumns; ++col) {
-        int widest = 0;
-        for (std::size_t i = static_cast<std::size_t>(col); i < shown_.size(); i += kColumns)
-            widest = std::max(widest, shown_[i].name->minimumSizeHint().width() + grid_->horizontalSpacing() +
-                                          shown_[i].value->sizeHint().width());
-        width += widest;
+        int widestName = 0, widestValue = 0;
+        for (std::size_t i = static_cast<std::size_t>(col); i < shown_.size(); i += kColumns) {
+            widestName = std::max(widestName, shown_[i].name->minimumSizeHint().width());
+            widestValue = std::max(widestValue, shown_[i].value->sizeHint().width());
+        }
+        width += widestName + grid_->horizontalSpacing() + widestValue;
     }
     const QMargins m = grid_->contentsMargins();
     return width + (kColumns - 1) * grid_->horizontalSpacing() + m.left() + m.right();
@@ -135,9 +139,8 @@ void PresentReadouts::resizeEvent(QResizeEvent* event) {
     if (beside != beside_) place(beside);
 }
 
-QString PresentReadouts::valueText(const ReadoutSpec& spec, int column) const {
-    const TimeSeries& table = controller_->series()->table();
-    if (table.rows() == 0) return QStringLiteral("—");
+QString readoutValueText(const ReadoutSpec& spec, const TimeSeries& table, int column) {
+    if (table.rows() == 0 || column < 0) return QStringLiteral("—");
     const double v = table.row(table.rows() - 1)[static_cast<std::size_t>(column)] * spec.scale;
     if (!std::isfinite(v)) return QStringLiteral("—");
     // In the UI's language (German 0,474), without group separators, as the plots write numbers.
@@ -152,14 +155,17 @@ QString PresentReadouts::valueText(const ReadoutSpec& spec, int column) const {
 }
 
 void PresentReadouts::refresh() {
-    for (const Shown& s : shown_) s.value->setText(valueText(s.spec, s.column));
+    for (const Shown& s : shown_)
+        s.value->setText(readoutValueText(s.spec, controller_->series()->table(), s.column));
     if (beside_ && width() < besideWidth()) place(false); // a longer number no longer fits beside
 }
 
 void PresentReadouts::changeEvent(QEvent* event) {
     QWidget::changeEvent(event);
-    if (event->type() == QEvent::FontChange)
+    if (event->type() == QEvent::FontChange) {
         for (const Shown& s : shown_) s.value->setFont(valueFont(font()));
+        place(width() >= besideWidth()); // larger numbers (projector mode) may no longer fit beside
+    }
 }
 
 QStringList PresentReadouts::texts() const {
