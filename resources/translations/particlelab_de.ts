@@ -100,6 +100,47 @@ Wirkt nach „Zurücksetzen“.</translation>
     </message>
 </context>
 <context>
+    <name>SceneDescription</name>
+    <message>
+        <source>Colour shows the sampled field %1.</source>
+        <translation>Farbe: das gemessene Feld %1.</translation>
+    </message>
+    <message>
+        <source>Colours: %1.</source>
+        <translation>Farben: %1.</translation>
+    </message>
+    <message>
+        <source>Colour shows %1.</source>
+        <translation>Farbe: %1.</translation>
+    </message>
+    <message>
+        <source>Scene: %1</source>
+        <translation>Szene: %1</translation>
+    </message>
+    <message>
+        <source>The simulation stopped: its state is no longer physical.</source>
+        <translation>Die Simulation ist angehalten: ihr Zustand ist nicht mehr physikalisch.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n particle(s).</source>
+        <translation>
+            <numerusform>%n Teilchen.</numerusform>
+            <numerusform>%n Teilchen.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n obstacle(s).</source>
+        <translation>
+            <numerusform>%n Hindernis.</numerusform>
+            <numerusform>%n Hindernisse.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>A piston stands at x = %1.</source>
+        <translation>Ein Kolben steht bei x = %1.</translation>
+    </message>
+</context>
+<context>
     <name>pl::core</name>
     <message>
         <source>3: molecules scatter isotropically in space; 2: velocities and scattering stay in the plane, like the 2D disk gas (for comparing the two).</source>
@@ -3785,6 +3826,10 @@ Wirkt nach „Zurücksetzen“.</translation>
     <message>
         <source>The simulation stopped: its state is no longer physical. Press Reset (Ctrl+R) to start again; its message said which change to take back.</source>
         <translation>Die Simulation ist angehalten: ihr Zustand ist nicht mehr physikalisch. „Zurücksetzen“ (Strg+R) startet neu; ihre Meldung nannte die Änderung, die zurückzunehmen ist.</translation>
+    </message>
+    <message>
+        <source>Scene: none loaded</source>
+        <translation>Szene: keine geladen</translation>
     </message>
 </context>
 </TS>

@@ -19,6 +19,23 @@
     </message>
 </context>
 <context>
+    <name>SceneDescription</name>
+    <message numerus="yes">
+        <source>%n particle(s).</source>
+        <translation>
+            <numerusform>%n particle.</numerusform>
+            <numerusform>%n particles.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n obstacle(s).</source>
+        <translation>
+            <numerusform>%n obstacle.</numerusform>
+            <numerusform>%n obstacles.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>pl::ui::DistributionPlot</name>
     <message numerus="yes">
         <source>%n sample(s)</source>

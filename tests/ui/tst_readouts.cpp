@@ -6,10 +6,14 @@
 #include "MainWindow.h"
 #include "SimulationController.h"
 #include "UiTestSupport.h"
+#include "catalog/ModelCatalog.h"
+#include "i18n/Translations.h"
 #include "panels/ParameterPanel.h"
+#include "present/PresentReadouts.h"
 #include "viewport/ViewportCore.h"
 
 #include <QAbstractSpinBox>
+#include <QAccessible>
 #include <QLineEdit>
 #include <QScrollArea>
 #include <QSlider>
@@ -47,7 +51,10 @@ int noticePixels(const QImage& image) {
 class TestReadouts : public QObject {
     Q_OBJECT
 private slots:
-    void initTestCase() { test::useCleanTestSettings(); }
+    void initTestCase() {
+        test::useCleanTestSettings();
+        QVERIFY(ui::installLanguage("en")); // as the app starts: English with its plural forms
+    }
 
     // The case: Mass (A) = 25 typed in while the gas runs. Before, kT jumped 0.47 → 11.2 with the
     // histogram unchanged; the mass now waits in the panel until Reset.
@@ -179,6 +186,65 @@ private slots:
         for (int frame = 0; frame < 20; ++frame) window.controller()->advanceFrame();
         QCOMPARE(colourTop(), fluidTop);
         window.document()->setModified(false);
+    }
+    // The viewport in words for a screen reader, from each kind's registration alone: its title as the
+    // accessible name, and as the description the particle count, what the colour shows and present mode's
+    // readouts with their latest values, kept current while the run goes (it was an empty node before).
+    void theViewportDescribesItsScene_data() {
+        QTest::addColumn<QString>("preset");
+        for (const ModelDescriptor& kind : modelCatalog())
+            if (!kind.contractPreset.empty())
+                QTest::newRow(kind.kind.c_str()) << QString::fromStdString(kind.contractPreset);
+    }
+    void theViewportDescribesItsScene() {
+        QFETCH(QString, preset);
+        ui::MainWindow window;
+        QVERIFY(window.openPreset(preset));
+        QVERIFY(test::showActive(window));
+        runFrames(window, 5);
+        window.viewportCore()->describe(); // at once, not at the next second's frame
+        const Model& model = *window.controller()->model();
+        QAccessibleInterface* node = QAccessible::queryAccessibleInterface(window.viewport());
+        QVERIFY(node);
+        QCOMPARE(node->text(QAccessible::Name), "Scene: " + ui::coreText(findModel(model.kind())->title));
+        const QString description = node->text(QAccessible::Description);
+        QVERIFY2(description.contains(QString("%1 particles.").arg(model.particleCount())),
+                 qPrintable(description));
+        int readouts = 0;
+        for (const ui::ReadoutSpec& spec : ui::readoutSpecsFor(model))
+            if (window.controller()->series()->column(spec.column) >= 0 && !spec.needsBodies) {
+                QVERIFY2(description.contains(spec.name + " = "), qPrintable(spec.name + ": " + description));
+                ++readouts;
+            }
+        QVERIFY(readouts >= 2);
+        QVERIFY2(!description.contains("nan") && !description.contains("E+"), qPrintable(description));
+
+        // A second later the numbers are the run's new ones (each kind's time or state moves on).
+        QTest::qWait(1100);
+        runFrames(window, 20);
+        (void)window.viewportImage(); // a frame describes the scene once a second
+        QVERIFY2(node->text(QAccessible::Description) != description,
+                 qPrintable(description + " | " + node->text(QAccessible::Description)));
+        window.document()->setModified(false);
+    }
+
+    // In German, as the rest of the window: the name and the sentences come through the catalogue.
+    void theSceneIsDescribedInTheUiLanguage() {
+        QVERIFY(ui::installLanguage("de"));
+        {
+            ui::MainWindow window;
+            QVERIFY(window.openPreset("gas-classroom"));
+            QVERIFY(test::showActive(window));
+            runFrames(window, 5);
+            window.viewportCore()->describe();
+            const QString name = window.viewport()->accessibleName(),
+                          description = window.viewport()->accessibleDescription();
+            QVERIFY2(name.startsWith("Szene: "), qPrintable(name));
+            QVERIFY2(description.contains("Teilchen.") && description.contains("Farbe"),
+                     qPrintable(description));
+            window.document()->setModified(false);
+        }
+        QVERIFY(ui::installLanguage("en"));
     }
 };
 

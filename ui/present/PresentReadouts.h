@@ -12,7 +12,8 @@ class QLabel;
 
 namespace pl {
 class Model;
-}
+class TimeSeries;
+} // namespace pl
 
 namespace pl::ui {
 
@@ -31,6 +32,9 @@ struct ReadoutSpec {
 
 // The readouts of the model's kind, in the UI's language.
 std::vector<ReadoutSpec> readoutSpecsFor(const Model& model);
+// A readout's value in the latest row of table, as the board writes it (the language's digits, plain up to
+// a million, the unit after it); a dash for no row or a value that is not finite.
+QString readoutValueText(const ReadoutSpec& spec, const TimeSeries& table, int column);
 
 class PresentReadouts : public QWidget {
     Q_OBJECT
@@ -48,9 +52,8 @@ protected:
     void resizeEvent(QResizeEvent* event) override; // beside or above, as the width allows
 
 private:
-    void rebuild(); // a new table: the scene (and so the readouts) may have changed
-    void refresh(); // a new row
-    QString valueText(const ReadoutSpec& spec, int column) const;
+    void rebuild();          // a new table: the scene (and so the readouts) may have changed
+    void refresh();          // a new row
     int besideWidth() const; // the width that the names beside their numbers need
     void place(bool beside); // puts the labels into the grid, names beside or above their numbers
 

@@ -5,6 +5,7 @@
 #include "ViewportCore.h"
 
 #include "FieldOverlay.h"
+#include "SceneDescription.h"
 #include "ScenePainter.h"
 #include "SimulationController.h"
 #include "i18n/Translations.h"
@@ -39,10 +40,13 @@ ViewportCore::ViewportCore(SimulationController* controller, QWidget* widget)
         probe_.reset();
         colourScale_.restart();
         setProfileLine(std::nullopt); // another domain: the old line would mean nothing there
+        describeSoon_ = true;
     });
     // A parameter such as the field shown changes the picture even while time stands still.
     connect(controller, &SimulationController::parametersChanged, this, &ViewportCore::requestFrame);
+    connect(controller, &SimulationController::parametersChanged, this, [this] { describeSoon_ = true; });
     frameClock_.start();
+    describedClock_.start();
     updateCursor();
 }
 
@@ -64,12 +68,27 @@ void ViewportCore::requestFrame() const {
 }
 
 void ViewportCore::endPaint() {
+    // A screen reader reads the description when asked: once a second keeps its numbers current without
+    // an accessibility event every frame.
+    if (describeSoon_ || describedClock_.elapsed() >= kDescribeIntervalMs) describe();
     controller_->frameShown();
     ++framesCounted_;
     if (frameClock_.elapsed() >= 1000) {
         framesPerSecond_ = 1000.0 * framesCounted_ / static_cast<double>(frameClock_.restart());
         framesCounted_ = 0;
     }
+}
+
+void ViewportCore::describe() {
+    describeSoon_ = false;
+    describedClock_.restart();
+    const Model* model = controller_->model();
+    const QString name = model ? sceneAccessibleName(*model) : tr("Scene: none loaded");
+    const QString description =
+        model ? sceneAccessibleDescription(*model, scene_, controller_->series()->table()) : QString();
+    // Each setter sends its change event to the accessibility tree; an unchanged text sends none.
+    if (widget_->accessibleName() != name) widget_->setAccessibleName(name);
+    if (widget_->accessibleDescription() != description) widget_->setAccessibleDescription(description);
 }
 
 void ViewportCore::setTool(ViewportTool tool) {

@@ -36,8 +36,11 @@ public:
 
     // Takes this frame's snapshot and fits the transform to the widget; call first in every paint.
     void beginPaint();
-    // Counts a finished frame for the frame-rate meter.
+    // Counts a finished frame for the frame-rate meter, and keeps the widget's accessible name and
+    // description (SceneDescription.h) up to date.
     void endPaint();
+    // Describes the frame's scene to the accessibility tree now.
+    void describe();
     const SceneView& scene() const { return scene_; }
     // The particles' colour scale: automatic (follows a heated gas) or the model's fixed one.
     ColourScale& colourScale() { return colourScale_; }
@@ -111,6 +114,10 @@ private:
     std::optional<std::size_t> hovered_;
     std::optional<QPointF> probe_;      // world point the probe reads
     std::optional<QLineF> profileLine_; // world units
+
+    static constexpr int kDescribeIntervalMs = 1000;
+    QElapsedTimer describedClock_;
+    bool describeSoon_ = true; // a new model or parameters: described at the next frame
 
     QElapsedTimer frameClock_;
     int framesCounted_ = 0;
