@@ -1,6 +1,8 @@
 // The machine benchmark dialog: queues the scene × backend × N jobs and plots each point as it finishes.
 #include "BenchmarkDialog.h"
 
+#include "catalog/ModelCatalog.h"
+#include "i18n/Translations.h"
 #include "plots/PlotExport.h"
 #include "plots/PlotStyle.h"
 #include "viewport/QtGlContext.h"
@@ -19,13 +21,20 @@ namespace pl::ui {
 namespace {
 constexpr double kSlowMicrosecondsPerStep = 2e5; // beyond 0.2 s per step a backend stops growing N
 
+// Each kind's sizes from its registration (ModelDescriptor::benchmark), on the CPU and then the GPU.
 std::vector<BenchmarkDialog::Job> defaultJobs() {
     std::vector<BenchmarkDialog::Job> jobs;
-    for (gl::Backend b : {gl::Backend::Cpu, gl::Backend::Gl}) {
-        for (std::size_t n : {1024u, 4096u, 16384u, 65536u, 262144u}) jobs.push_back({"gas", b, n});
-        for (std::size_t n : {2500u, 10000u, 40000u, 160000u}) jobs.push_back({"fluid", b, n});
-    }
+    for (gl::Backend b : {gl::Backend::Cpu, gl::Backend::Gl})
+        for (const ModelDescriptor& kind : modelCatalog())
+            if (kind.benchmark.scaledPreset)
+                for (std::size_t n : kind.benchmark.dialogSizes) jobs.push_back({kind.kind, b, n});
     return jobs;
+}
+
+// The scene's name as its menus show it: "Gas (molecular dynamics)".
+QString sceneTitle(const std::string& kind) {
+    const ModelDescriptor* descriptor = findModel(kind);
+    return descriptor ? coreText(descriptor->title) : QString::fromStdString(kind);
 }
 } // namespace
 
@@ -48,8 +57,8 @@ BenchmarkDialog::BenchmarkDialog(QWidget* parent) : QDialog(parent), jobs_(defau
     plot_->legend->setVisible(true);
     installPlotExportMenu(plot_);
     progress_ = new QProgressBar(this);
-    status_ = new QLabel(tr("Times the gas and the fluid at growing N on the CPU and, where OpenGL 4.3 is "
-                            "available, on the GPU. Right-click the plot to export it."),
+    status_ = new QLabel(tr("Times the scenes at growing N on the CPU and, where OpenGL 4.3 is available, on "
+                            "the GPU. Right-click the plot to export it."),
                          this);
     status_->setWordWrap(true);
     auto* buttons = new QDialogButtonBox(this);
@@ -114,14 +123,13 @@ void BenchmarkDialog::runNext() {
     progress_->setValue(static_cast<int>(next_));
     const std::string key = job.scene + "/" + gl::backendName(job.backend);
     if (std::find(tooSlow_.begin(), tooSlow_.end(), key) == tooSlow_.end()) {
-        status_->setText(tr("Timing the %1 with %2 particles on the %3…")
-                             .arg(job.scene == "gas" ? tr("gas") : tr("fluid"))
+        status_->setText(tr("Timing %1 with %2 particles on the %3…")
+                             .arg(sceneTitle(job.scene))
                              .arg(job.particles)
                              .arg(job.backend == gl::Backend::Gl ? tr("GPU") : tr("CPU")));
         status_->repaint();
         try {
-            const Preset preset = job.scene == "gas" ? gl::scaledGasPreset(job.particles)
-                                                     : gl::scaledFluidPreset(job.particles);
+            const Preset preset = gl::scaledPreset(job.scene, job.particles);
             gl::BackendChoice choice = gl::createModel(job.scene, job.backend, &preset, appComputeContext());
             // A GPU job without a GPU is skipped, not timed twice on the CPU.
             if (choice.backend == job.backend) {
@@ -143,13 +151,14 @@ void BenchmarkDialog::runNext() {
 }
 
 int BenchmarkDialog::graphFor(const std::string& scene, const std::string& backend) {
-    const QString name = QString("%1, %2").arg(scene == "gas" ? tr("gas") : tr("fluid"),
-                                               backend == "gl" ? tr("GPU") : tr("CPU"));
+    const QString name = QString("%1, %2").arg(sceneTitle(scene), backend == "gl" ? tr("GPU") : tr("CPU"));
     for (int g = 0; g < plot_->graphCount(); ++g)
         if (plot_->graph(g)->name() == name) return g;
     QCPGraph* graph = plot_->addGraph();
     graph->setName(name);
-    const QColor colour = scene == "gas" ? QColor(70, 120, 200) : QColor(40, 160, 120);
+    const ModelDescriptor* descriptor = findModel(scene);
+    const PlotColour c = descriptor ? descriptor->benchmark.colour : PlotColour{};
+    const QColor colour(c.red, c.green, c.blue);
     graph->setPen(QPen(colour, 2, backend == "gl" ? Qt::SolidLine : Qt::DashLine));
     graph->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCircle, 6));
     return plot_->graphCount() - 1;

@@ -381,9 +381,9 @@ int writeOrPrint(const std::string& path, const std::string& text) {
 gas::SweepResult sweepFromPreset(const SweepOptions& options) {
     Preset preset = loadPreset(options.from);
     applySets(preset, options.sets);
-    if (preset.model != "gas")
+    GasModel gas; // the sweep compares the gas's integrators
+    if (preset.model != gas.kind())
         throw std::invalid_argument("sweep --from needs a gas preset, not " + preset.model);
-    GasModel gas;
     gas.reset(preset);
     const double horizon = options.horizon > 0 ? options.horizon : 64 * std::abs(gas.parameters().dt);
     const int finest = *std::max_element(options.steps.begin(), options.steps.end());

@@ -45,17 +45,28 @@ Preset loadExperiment(const ScaleOutOptions& options, std::optional<StateRecord>
     return preset;
 }
 
-// The model of the experiment, at step 0 or in a snapshot's state, ready to export.
-template <class M> std::unique_ptr<M> modelFor(const ScaleOutOptions& options, const std::string& kind) {
+// The kinds handed to peer ("lammps", "sparta"), from their registrations, as a sentence names them.
+std::string kindsFor(const std::string& peer) {
+    std::vector<std::string> kinds;
+    for (const ModelDescriptor& kind : modelCatalog())
+        if (kind.peer == peer) kinds.push_back(kind.kind);
+    std::string out;
+    for (std::size_t i = 0; i < kinds.size(); ++i)
+        out += (i == 0 ? "" : i + 1 == kinds.size() ? " or " : ", ") + kinds[i];
+    return out;
+}
+
+// The model of the experiment, at step 0 or in a snapshot's state, ready to export to peer; throws
+// std::invalid_argument for a kind the peer does not take, naming the export that does.
+std::unique_ptr<Model> modelFor(const ScaleOutOptions& options, const std::string& peer) {
     std::optional<StateRecord> state;
     const Preset preset = loadExperiment(options, state);
-    if (preset.model != kind)
-        throw std::invalid_argument(
-            "export " + std::string(kind == "gas" ? "lammps needs a gas" : "sparta needs a dsmc or tunnel") +
-            " experiment, not " + preset.model +
-            (preset.model == "dsmc" || preset.model == "tunnel" ? " (use export sparta)" : "") +
-            (preset.model == "gas" ? " (use export lammps)" : ""));
-    auto model = std::make_unique<M>();
+    const ModelDescriptor* kind = findModel(preset.model);
+    if (!kind || kind->peer != peer)
+        throw std::invalid_argument("export " + peer + " needs a " + kindsFor(peer) + " experiment, not " +
+                                    preset.model +
+                                    (kind && !kind->peer.empty() ? " (use export " + kind->peer + ")" : ""));
+    std::unique_ptr<Model> model = kind->create();
     model->reset(preset);
     if (state) model->restoreState(*state);
     return model;
@@ -65,7 +76,9 @@ template <class M> std::unique_ptr<M> modelFor(const ScaleOutOptions& options, c
 int exportDeck(const ScaleOutOptions& options, const std::string& dir, bool quiet, long long& steps) {
     scaleout::Deck deck;
     try {
-        const auto gas = modelFor<GasModel>(options, "gas");
+        const auto model = modelFor(options, "lammps");
+        const auto* gas = dynamic_cast<const GasModel*>(model.get());
+        if (!gas) throw std::invalid_argument("export lammps writes a deck of a GasModel only");
         scaleout::LammpsExportOptions deckOptions = scaleout::defaultLammpsOptions(*gas);
         if (options.steps) deckOptions.steps = *options.steps;
         if (options.every) deckOptions.every = *options.every;
@@ -152,15 +165,14 @@ int exportSparta(const ScaleOutOptions& options) {
                 planned > 0 ? planned : (unplanned + chosen.every - 1) / chosen.every * chosen.every);
             return chosen;
         };
-        std::optional<StateRecord> state;
-        if (loadExperiment(options, state).model == "tunnel") {
-            const auto tunnel = modelFor<TunnelModel>(options, "tunnel");
+        const auto model = modelFor(options, "sparta");
+        if (const auto* tunnel = dynamic_cast<const TunnelModel*>(model.get()))
             deck = scaleout::spartaDeck(
                 *tunnel, deckOptions(tunnel->plannedSteps(), 2 * tunnel->parameters().sampleStart));
-        } else {
-            const auto cell = modelFor<DsmcModel>(options, "dsmc");
+        else if (const auto* cell = dynamic_cast<const DsmcModel*>(model.get()))
             deck = scaleout::spartaDeck(*cell, deckOptions(cell->plannedSteps(), 0));
-        }
+        else
+            throw std::invalid_argument("export sparta writes decks of a TunnelModel or a DsmcModel only");
     } catch (const std::exception& e) {
         return fail(kBadInput, e.what());
     }

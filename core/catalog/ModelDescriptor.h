@@ -118,6 +118,26 @@ struct PresentSpec {
     ParticleCountControl particleCount{};
 };
 
+// How the machine benchmark (core/gl/MachineBenchmark.h: the desktop's "Benchmark this machine" and
+// particlelab-bench) times the kind at growing N. A kind without scaledPreset is not benchmarked.
+struct BenchmarkScale {
+    // The kind's benchmark experiment with about n particles.
+    Preset (*scaledPreset)(std::size_t n) = nullptr;
+    // The most particles scaledPreset may be asked for, and what sets that limit (for the bench's help).
+    std::size_t (*largest)() = nullptr;
+    std::string limit{};
+    std::vector<std::size_t> dialogSizes{}; // the desktop dialog's N on each backend; empty: not there
+    std::vector<std::size_t> benchSizes{};  // particlelab-bench's default sizes (its --KIND option)
+    std::string sizesHelp{};                // that option's help: what a size counts
+    // The GPU twin's traffic [bytes per particle-step] counted from its kernels' loads and stores (a model,
+    // not a measurement), and the goal a GPU point is set against: the copy bandwidth divided by
+    // goalBytesPerParticleStep, or a fixed goalParticleStepsPerSecond where that is set instead.
+    double gpuBytesPerParticleStep = 0;
+    double goalBytesPerParticleStep = 0;
+    double goalParticleStepsPerSecond = 0;
+    PlotColour colour{}; // its curves in the dialog's plot
+};
+
 struct StateArrayNames {
     std::string x{}, y{}, id{};
 };
@@ -159,6 +179,10 @@ struct ModelDescriptor {
     // model of the kind and the series its run sampled: the lab report's "Readouts against theory" and a
     // lesson's checks read the same rows. nullptr: no theory applies.
     std::vector<TheoryRow> (*theoryRows)(const Model& model, const TimeSeries& series) = nullptr;
+    BenchmarkScale benchmark{};
+    // The peer program the kind is handed to (`particlelab-cli export PEER`, docs/scale-out.md): "lammps",
+    // "sparta"; empty: none.
+    std::string peer{};
 };
 
 // lighter() for a kind whose work per step follows its particle counts: each named count × share, at

@@ -56,6 +56,7 @@ const ModelDescriptor& dsmcRegistration() {
         .contractPreset = "dsmc-bkw",
 
         .theoryRows = dsmcTheoryRows,
+        .peer = "sparta",
     };
     return descriptor;
 }

@@ -1,4 +1,5 @@
 // The fluid's registration: its kind, units, parameters, creator, particle count, series and plots, once.
+#include "FluidBenchmarkScale.h"
 #include "FluidSeries.h"
 #include "FluidSpawnGrid.h"
 #include "catalog/ModelDescriptor.h"
@@ -70,6 +71,7 @@ const ModelDescriptor& fluidRegistration() {
         .stateArrays = {.x = "x", .y = "y"},
 
         .theoryRows = fluidTheoryRows,
+        .benchmark = fluidBenchmarkScale(),
     };
     return descriptor;
 }

@@ -3,7 +3,7 @@
 set(KIND_ORDER 3)
 set(KIND_REGISTRATION fluidRegistration)
 set(KIND_SOURCES
-  FluidSweep.cpp FluidModel.cpp FluidNeighbours.cpp FluidObservables.cpp FluidParams.cpp
+  FluidBenchmarkScale.cpp FluidSweep.cpp FluidModel.cpp FluidNeighbours.cpp FluidObservables.cpp FluidParams.cpp
   FluidRegistration.cpp FluidTheoryRows.cpp FluidScene.cpp FluidSnapshot.cpp FluidSolver.cpp FluidLambdaPass.cpp FluidRowScan.cpp)
 # The AVX-512 builds may use FMA instructions, which would round a product and a sum once where the SSE2
 # build rounds twice: no contraction keeps every build's bits and decisions the same (FluidLambdaPass.h,

@@ -1,4 +1,5 @@
 // The gas's registration: its kind, units, parameters, creator, particle count, series and plots, once.
+#include "GasBenchmarkScale.h"
 #include "GasSeries.h"
 #include "catalog/ModelDescriptor.h"
 
@@ -110,6 +111,8 @@ const ModelDescriptor& gasRegistration() {
         .stateArrays = {.x = "x", .y = "y", .id = "id"},
 
         .theoryRows = gasTheoryRows,
+        .benchmark = gasBenchmarkScale(),
+        .peer = "lammps",
     };
     return descriptor;
 }

@@ -3,6 +3,6 @@
 set(KIND_ORDER 1)
 set(KIND_REGISTRATION gasRegistration)
 set(KIND_SOURCES
-  GasBoundaries.cpp GasForces.cpp GasInitialState.cpp GasIntegratorTable.cpp GasIntegrators.cpp GasModel.cpp
+  GasBenchmarkScale.cpp GasBoundaries.cpp GasForces.cpp GasInitialState.cpp GasIntegratorTable.cpp GasIntegrators.cpp GasModel.cpp
   GasObservables.cpp GasParams.cpp GasRegistration.cpp GasTheoryRows.cpp GasScene.cpp GasSnapshot.cpp GasSpawner.cpp
   GasStability.cpp GasState.cpp MethodSweep.cpp StabilityMap.cpp TimeReversal.cpp)

@@ -1,6 +1,6 @@
-// "Benchmark this machine": the gas (and later scenes) at growing N on each backend, timed the same way
-// by the desktop dialog and by particlelab-bench. Time is measured over whole batches of steps ended by
-// glFinish, so GPU queues are drained inside the timed region.
+// "Benchmark this machine": each kind with a benchmark scale (ModelDescriptor::benchmark) at growing N
+// on each backend, timed the same way by the desktop dialog and by particlelab-bench. Time is measured over
+// whole batches of steps ended by glFinish, so GPU queues are drained inside the timed region.
 #pragma once
 
 #include "Backends.h"
@@ -12,7 +12,7 @@
 namespace pl::gl {
 
 struct BenchPoint {
-    std::string scene;   // "gas", "fluid" or "tunnel"
+    std::string scene;   // the kind: "gas", "fluid", "tunnel"
     std::string backend; // "cpu" or "gl"
     std::size_t particles = 0;
     double particleStepsPerSecond = 0; // median over repeats
@@ -25,19 +25,9 @@ struct BenchPoint {
     double settleSeconds = 0;                      // [s] stepped before the repeats until the rate settled
 };
 
-// The write-up's gas (velocity Verlet, d = 0.01, k = 1000, speed 1) with n disks at the write-up's area
-// fraction: the box grows as √(n / 4096).
-Preset scaledGasPreset(std::size_t n);
-
-// The dam break's fluid (2D kernels, ε = 1, h = 0.8, spacing 0.4) with about n particles in one block at
-// most 64 rows tall (square below 4096 particles) in a tank twice as wide and 1.5 times as high,
-// 5 iterations: a column five iterations hold at its rest density at every n.
-Preset scaledFluidPreset(std::size_t n);
-
-// The `tunnel-cylinder` preset (hypersonic argon past a cylinder, collisions on) scaled to about n
-// simulated molecules: F_N shrinks and the cell grid refines by √ of the ratio along each side, so the
-// flow (density, Kn, Δt) and the molecules per cell stay the preset's and only the resolution grows.
-Preset scaledTunnelPreset(std::size_t n);
+// The benchmark experiment of a kind with about n particles (its registration's
+// ModelDescriptor::benchmark). Throws std::invalid_argument for a kind without one.
+Preset scaledPreset(const std::string& kind, std::size_t n);
 
 // Steps per repeat that take about targetSeconds at a guessed rate, at least minSteps.
 struct BenchSettings {

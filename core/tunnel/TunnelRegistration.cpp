@@ -1,4 +1,5 @@
 // The tunnel's registration: its kind, units, parameters, creator, particle count, series and plots, once.
+#include "TunnelBenchmarkScale.h"
 #include "TunnelSeries.h"
 #include "catalog/ModelDescriptor.h"
 
@@ -60,6 +61,8 @@ const ModelDescriptor& tunnelRegistration() {
         .stateArrays = {.x = "x", .y = "y"},
 
         .theoryRows = tunnelTheoryRows,
+        .benchmark = tunnelBenchmarkScale(),
+        .peer = "sparta",
     };
     return descriptor;
 }

@@ -3,6 +3,6 @@
 set(KIND_ORDER 4)
 set(KIND_REGISTRATION tunnelRegistration)
 set(KIND_SOURCES
-  TunnelCollide.cpp TunnelInflow.cpp TunnelModel.cpp TunnelMove.cpp TunnelObservables.cpp TunnelParams.cpp
+  TunnelBenchmarkScale.cpp TunnelCollide.cpp TunnelInflow.cpp TunnelModel.cpp TunnelMove.cpp TunnelObservables.cpp TunnelParams.cpp
   TunnelRegistration.cpp TunnelTheoryRows.cpp TunnelSampler.cpp TunnelSamplerState.cpp TunnelSnapshot.cpp TunnelStepUndo.cpp
   TunnelTheory.cpp)

@@ -2107,8 +2107,8 @@ Wirkt nach „Zurücksetzen“.</translation>
         <translation>Teilchenschritte pro Sekunde</translation>
     </message>
     <message>
-        <source>Times the gas and the fluid at growing N on the CPU and, where OpenGL 4.3 is available, on the GPU. Right-click the plot to export it.</source>
-        <translation>Misst Gas und Flüssigkeit bei wachsendem N auf der CPU und, wo OpenGL 4.3 verfügbar ist, auf der GPU. Rechtsklick auf das Diagramm exportiert es.</translation>
+        <source>Times the scenes at growing N on the CPU and, where OpenGL 4.3 is available, on the GPU. Right-click the plot to export it.</source>
+        <translation>Misst die Szenen bei wachsendem N auf der CPU und, wo OpenGL 4.3 verfügbar ist, auf der GPU. Rechtsklick auf das Diagramm exportiert es.</translation>
     </message>
     <message>
         <source>Start</source>
@@ -2131,7 +2131,7 @@ Wirkt nach „Zurücksetzen“.</translation>
         <translation>Fertig: %1 Messungen. Rechtsklick auf das Diagramm speichert es oder seine Daten.</translation>
     </message>
     <message>
-        <source>Timing the %1 with %2 particles on the %3…</source>
+        <source>Timing %1 with %2 particles on the %3…</source>
         <translation>Zeitmessung: %1 mit %2 Teilchen auf der %3…</translation>
     </message>
     <message>
@@ -2145,14 +2145,6 @@ Wirkt nach „Zurücksetzen“.</translation>
     <message>
         <source>%1 failed: %2</source>
         <translation>%1 fehlgeschlagen: %2</translation>
-    </message>
-    <message>
-        <source>gas</source>
-        <translation>Gas</translation>
-    </message>
-    <message>
-        <source>fluid</source>
-        <translation>Flüssigkeit</translation>
     </message>
 </context>
 <context>

@@ -99,7 +99,7 @@ private slots:
     void countingSortIsAPermutationInCellOrder() {
         QFETCH(int, disks);
         GasModelGL model(context_);
-        model.reset(disks == 0 ? denseGas("velocity-verlet") : scaledGasPreset(std::size_t(disks)));
+        model.reset(disks == 0 ? denseGas("velocity-verlet") : scaledPreset("gas", std::size_t(disks)));
         model.step();
         QCOMPARE(model.dispatchesLastStep(), disks == 0 ? 2 : 6);
         const GasState& s = model.state();

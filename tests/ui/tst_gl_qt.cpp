@@ -29,7 +29,7 @@ private slots:
     }
 
     void gasStepsInTheQtContextLikeTheCpu() {
-        const Preset preset = gl::scaledGasPreset(2048);
+        const Preset preset = gl::scaledPreset("gas", 2048);
         GasModel cpu;
         cpu.reset(preset);
         gl::GasModelGL gpu(context_);
@@ -41,7 +41,7 @@ private slots:
     }
 
     void fluidStepsInTheQtContext() {
-        const Preset preset = gl::scaledFluidPreset(900);
+        const Preset preset = gl::scaledPreset("fluid", 900);
         gl::FluidModelGL gpu(context_);
         gpu.reset(preset);
         for (int s = 0; s < 20; ++s) gpu.step();
@@ -53,7 +53,7 @@ private slots:
     void controllerSwitchesBackends() {
         ui::SimulationController controller;
         controller.setBackend(gl::Backend::Gl);
-        QVERIFY(controller.load(gl::scaledGasPreset(1024)).isEmpty());
+        QVERIFY(controller.load(gl::scaledPreset("gas", 1024)).isEmpty());
         QCOMPARE(controller.model()->backend(), std::string("gl"));
         controller.advanceFrame();
         QSignalSpy notices(&controller, &ui::SimulationController::notice);

@@ -3,9 +3,11 @@
 // to a registered kind.
 #include "catalog/ModelCatalog.h"
 #include "gl/GpuModels.h"
+#include "gl/MachineBenchmark.h"
 
 #include <QtTest>
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <set>
 
@@ -220,6 +222,47 @@ private slots:
             QVERIFY2(defaults.params == made.params, d.kind.c_str());
             QCOMPARE(instantiate(defaults)->particleCount(), d.create()->particleCount());
         }
+    }
+
+    // The machine benchmark's scale, from each kind's registration: every size the dialog and
+    // particlelab-bench time by default is one the kind's model takes, with about that many particles
+    // (the fluid's block rounds to whole rows, the tunnel's fill to the free stream's count).
+    void benchmarkScalesGiveTheSizesAsked() {
+        int scaled = 0;
+        for (const ModelDescriptor& d : modelCatalog()) {
+            const BenchmarkScale& scale = d.benchmark;
+            if (!scale.scaledPreset) continue;
+            ++scaled;
+            QVERIFY2(scale.largest && scale.largest() > 0 && !scale.limit.empty(), d.kind.c_str());
+            QVERIFY2(!scale.benchSizes.empty() && !scale.sizesHelp.empty(), d.kind.c_str());
+            QVERIFY2(scale.gpuBytesPerParticleStep > 0 &&
+                         (scale.goalBytesPerParticleStep > 0) != (scale.goalParticleStepsPerSecond > 0),
+                     d.kind.c_str());
+            std::vector<std::size_t> sizes = scale.dialogSizes;
+            sizes.insert(sizes.end(), scale.benchSizes.begin(), scale.benchSizes.end());
+            for (const std::size_t n : sizes) {
+                const std::string where = d.kind + " at " + std::to_string(n);
+                QVERIFY2(n <= scale.largest(), where.c_str());
+                const Preset preset = scale.scaledPreset(n);
+                QCOMPARE(preset.model, d.kind);
+                const double made = static_cast<double>(d.particleCount(preset));
+                QVERIFY2(std::abs(made / static_cast<double>(n) - 1.0) < 0.1,
+                         (where + ": " + std::to_string(made) + " particles").c_str());
+            }
+            // The smallest size refuses nothing (a model of the kind takes its parameters).
+            QVERIFY2((d.create()->setParams(scale.scaledPreset(sizes.front()).params), true), d.kind.c_str());
+        }
+        QVERIFY(scaled >= 3); // the gas, the fluid and the tunnel
+        QVERIFY_THROWS_EXCEPTION(std::invalid_argument, gl::scaledPreset("dsmc", 1000));
+    }
+
+    // The hand-off to a peer (particlelab-cli export): each named peer takes the kinds that name it.
+    void peersAreNamedByTheirKinds() {
+        std::set<std::string> peers;
+        for (const ModelDescriptor& d : modelCatalog())
+            if (!d.peer.empty()) peers.insert(d.peer);
+        QVERIFY(peers.count("lammps") && peers.count("sparta"));
+        QCOMPARE(findModel("gas")->peer, std::string("lammps"));
     }
 
     void gpuModelsAreRegisteredKinds() {
