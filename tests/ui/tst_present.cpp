@@ -228,9 +228,13 @@ private slots:
             for (const BuiltinPreset* builtin : builtinPresetsOf(descriptor.kind))
                 presets << QString::fromStdString(builtin->name);
             if (presets.isEmpty()) presets << QString();
-            for (const QString& preset : presets)
+            for (const QString& preset : presets) {
                 for (QSize size : {QSize(1024, 700), QSize(1280, 800), QSize(1920, 1080)})
                     row(kind, preset, size, false, "en");
+                // Every scene's board in projector mode on the smallest screen (fluid-obstacle's gravity
+                // controls, pour and spawn tool ran past its bottom edge)
+                if (preset != presets.front()) row(kind, preset, QSize(1024, 700), true, "en");
+            }
             for (const QString language : {"en", "de"}) {
                 for (QSize size : {QSize(1024, 700), QSize(1280, 800)})
                     row(kind, presets.front(), size, true, language);
