@@ -76,7 +76,7 @@ int main(int argc, char** argv) {
            "Scenes to time, of " + sceneList +
                " (default all). Only the tunnel points: --scenes tunnel; e.g. --scenes tunnel --tunnel "
                "100000 1000000 10000000, or --tunnel 20000 on llvmpipe")
-        ->check(CLI::IsMember(scenes));
+        ->check(CLI::IsMember(std::vector<std::string>(scenes))); // the choices, not the option being parsed
     app.add_option("--cpu-max", cpuMax, "Largest N also timed on the CPU model (0: none)")
         ->transform(wholeNumber(0, static_cast<long long>(largestOfAll), "the largest size of any scene"));
     app.add_option("--repeats", settings.repeats, "Timed repeats per point; the median is reported")
