@@ -3,9 +3,9 @@
 // the core's catalogue, so the spoken scene and the drawn one say the same.
 #include "SceneDescription.h"
 
+#include "SeriesStore.h"
 #include "catalog/ModelCatalog.h"
 #include "common/Model.h"
-#include "common/TimeSeries.h"
 #include "i18n/Translations.h"
 #include "present/PresentBoard.h"
 #include "present/PresentReadouts.h"
@@ -19,13 +19,6 @@
 namespace pl::ui {
 
 namespace {
-int columnOf(const TimeSeries& series, const QString& name) {
-    const std::vector<std::string>& columns = series.columns();
-    for (std::size_t c = 0; c < columns.size(); ++c)
-        if (QString::fromStdString(columns[c]) == name) return static_cast<int>(c);
-    return -1;
-}
-
 // "Colour shows speed." or "Colours: species A, species B."
 QString colourSentence(const SceneView& scene) {
     if (scene.field && !scene.drawParticles)
@@ -50,7 +43,7 @@ QString sceneAccessibleName(const Model& model) {
     return QCoreApplication::translate("SceneDescription", "Scene: %1").arg(title);
 }
 
-QString sceneAccessibleDescription(const Model& model, const SceneView& scene, const TimeSeries& series) {
+QString sceneAccessibleDescription(const Model& model, const SceneView& scene, const SeriesStore& series) {
     QStringList sentences;
     if (model.failure())
         sentences << QCoreApplication::translate("SceneDescription",
@@ -67,9 +60,9 @@ QString sceneAccessibleDescription(const Model& model, const SceneView& scene, c
     if (!scene.hint.empty()) sentences << coreText(scene.hint);
     QStringList readouts;
     for (const ReadoutSpec& spec : readoutSpecsFor(model)) {
-        const int column = columnOf(series, spec.column);
+        const int column = series.column(spec.column);
         if (column < 0 || (spec.needsBodies && scene.obstacles.empty())) continue;
-        readouts << QStringLiteral("%1 = %2").arg(spec.name, readoutValueText(spec, series, column));
+        readouts << QStringLiteral("%1 = %2").arg(spec.name, readoutValueText(spec, series.table(), column));
     }
     if (!readouts.isEmpty()) sentences << readouts.join(QStringLiteral(", ")) + QLatin1Char('.');
     return sentences.join(QLatin1Char(' '));

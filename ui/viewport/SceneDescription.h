@@ -8,11 +8,12 @@
 
 namespace pl {
 class Model;
-class TimeSeries;
 struct SceneView;
 } // namespace pl
 
 namespace pl::ui {
+
+class SeriesStore;
 
 // "Scene: Gas (molecular dynamics)", in the UI's language.
 QString sceneAccessibleName(const Model& model);
@@ -20,6 +21,6 @@ QString sceneAccessibleName(const Model& model);
 // What a sighted student reads off the picture, in sentences: how many particles and what their colour
 // shows, the bodies and the piston, the scene's own hint, and the kind's readouts with their latest values
 // from series ("N = 2000, kT = 0.474, P = 0.951, t = 12.30").
-QString sceneAccessibleDescription(const Model& model, const SceneView& scene, const TimeSeries& series);
+QString sceneAccessibleDescription(const Model& model, const SceneView& scene, const SeriesStore& series);
 
 } // namespace pl::ui

@@ -43,8 +43,10 @@ ViewportCore::ViewportCore(SimulationController* controller, QWidget* widget)
         describeSoon_ = true;
     });
     // A parameter such as the field shown changes the picture even while time stands still.
-    connect(controller, &SimulationController::parametersChanged, this, &ViewportCore::requestFrame);
-    connect(controller, &SimulationController::parametersChanged, this, [this] { describeSoon_ = true; });
+    connect(controller, &SimulationController::parametersChanged, this, [this] {
+        describeSoon_ = true;
+        requestFrame();
+    });
     frameClock_.start();
     describedClock_.start();
     updateCursor();
@@ -85,7 +87,7 @@ void ViewportCore::describe() {
     const Model* model = controller_->model();
     const QString name = model ? sceneAccessibleName(*model) : tr("Scene: none loaded");
     const QString description =
-        model ? sceneAccessibleDescription(*model, scene_, controller_->series()->table()) : QString();
+        model ? sceneAccessibleDescription(*model, scene_, *controller_->series()) : QString();
     // Each setter sends its change event to the accessibility tree; an unchanged text sends none.
     if (widget_->accessibleName() != name) widget_->setAccessibleName(name);
     if (widget_->accessibleDescription() != description) widget_->setAccessibleDescription(description);
